@@ -1,0 +1,286 @@
+// The C API (include/prism.h). Each function checks its arguments, then runs
+// its body inside guarded() (api_boundary.h).
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "api/api_boundary.h"
+#include "api/api_handles.h"
+#include "device/device_list.h"
+#include "render/image_writer.h"
+#include "scene/scene_loader.h"
+
+using namespace prism;
+
+namespace {
+
+#define PRISM_REQUIRE(cond, message) \
+  if (!(cond)) return fail(PRISM_ERROR_INVALID_ARGUMENT, message)
+
+void copyString(char* dst, size_t capacity, const std::string& src) {
+  std::strncpy(dst, src.c_str(), capacity - 1);
+  dst[capacity - 1] = '\0';
+}
+
+PrismDeviceInfo toInfo(const DeviceDescription& d) {
+  PrismDeviceInfo info;
+  std::memset(&info, 0, sizeof(info));
+  info.index = d.index;
+  copyString(info.name, sizeof(info.name), d.name);
+  copyString(info.vendor, sizeof(info.vendor), d.vendor);
+  copyString(info.platform, sizeof(info.platform), d.platform_name);
+  copyString(info.driver_version, sizeof(info.driver_version), d.driver_version);
+  copyString(info.opencl_c_version, sizeof(info.opencl_c_version), d.opencl_c_version);
+  if (d.type & CL_DEVICE_TYPE_GPU)
+    info.type = PRISM_DEVICE_GPU;
+  else if (d.type & CL_DEVICE_TYPE_CPU)
+    info.type = PRISM_DEVICE_CPU;
+  else if (d.type & CL_DEVICE_TYPE_ACCELERATOR)
+    info.type = PRISM_DEVICE_ACCELERATOR;
+  else
+    info.type = PRISM_DEVICE_OTHER;
+  info.compute_units = d.compute_units;
+  info.global_memory_bytes = d.global_memory_bytes;
+  return info;
+}
+
+RenderOptions fromC(const PrismRenderOptions& o) {
+  RenderOptions r;
+  r.width = static_cast<int>(std::min<uint32_t>(o.width, std::numeric_limits<int>::max()));
+  r.height = static_cast<int>(std::min<uint32_t>(o.height, std::numeric_limits<int>::max()));
+  r.spp = static_cast<int>(std::min<uint32_t>(o.spp, std::numeric_limits<int>::max()));
+  r.max_depth = static_cast<int>(std::min<uint32_t>(o.max_depth, std::numeric_limits<int>::max()));
+  r.min_weight = o.min_weight;
+  r.seed = o.seed;
+  return r;
+}
+
+PrismStatus loadInto(Scene scene, PrismScene* out) {
+  *out = new PrismSceneImpl{std::move(scene)};
+  return PRISM_OK;
+}
+
+}  // namespace
+
+extern "C" {
+
+PRISM_API uint32_t prismGetVersion(void) {
+  return (PRISM_VERSION_MAJOR << 16) | (PRISM_VERSION_MINOR << 8) | PRISM_VERSION_PATCH;
+}
+
+PRISM_API const char* prismGetVersionString(void) { return PRISM_VERSION_STRING; }
+
+PRISM_API const char* prismGetLastError(void) { return lastError(); }
+
+PRISM_API const char* prismStatusName(PrismStatus status) {
+  switch (status) {
+    case PRISM_OK: return "PRISM_OK";
+    case PRISM_ERROR_INVALID_ARGUMENT: return "PRISM_ERROR_INVALID_ARGUMENT";
+    case PRISM_ERROR_IO: return "PRISM_ERROR_IO";
+    case PRISM_ERROR_PARSE: return "PRISM_ERROR_PARSE";
+    case PRISM_ERROR_DEVICE: return "PRISM_ERROR_DEVICE";
+    case PRISM_ERROR_KERNEL_BUILD: return "PRISM_ERROR_KERNEL_BUILD";
+    case PRISM_ERROR_OUT_OF_MEMORY: return "PRISM_ERROR_OUT_OF_MEMORY";
+    case PRISM_ERROR_INVALID_OPERATION: return "PRISM_ERROR_INVALID_OPERATION";
+    case PRISM_ERROR_UNKNOWN: return "PRISM_ERROR_UNKNOWN";
+  }
+  return "PRISM_ERROR_UNKNOWN";
+}
+
+PRISM_API PrismStatus prismGetDeviceCount(uint32_t* count) {
+  PRISM_REQUIRE(count, "prismGetDeviceCount: count is NULL");
+  return guarded([&] {
+    *count = static_cast<uint32_t>(listDevices().size());
+    return PRISM_OK;
+  });
+}
+
+PRISM_API PrismStatus prismGetDeviceInfo(uint32_t index, PrismDeviceInfo* info) {
+  PRISM_REQUIRE(info, "prismGetDeviceInfo: info is NULL");
+  return guarded([&] {
+    auto devices = listDevices();
+    if (index >= devices.size())
+      return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetDeviceInfo: no device " + std::to_string(index) + " (there are " +
+                                                    std::to_string(devices.size()) + ")");
+    *info = toInfo(devices[index]);
+    return PRISM_OK;
+  });
+}
+
+PRISM_API void prismDefaultContextOptions(PrismContextOptions* options) {
+  if (!options) return;
+  options->struct_size = sizeof(PrismContextOptions);
+  options->use_kernel_cache = 1;
+}
+
+PRISM_API PrismStatus prismCreateContext(const char* selector, const PrismContextOptions* options,
+                                         PrismContext* out_context) {
+  PRISM_REQUIRE(out_context, "prismCreateContext: out_context is NULL");
+  *out_context = nullptr;
+  PRISM_REQUIRE(!options || options->struct_size >= sizeof(PrismContextOptions),
+                "prismCreateContext: options->struct_size is too small (call prismDefaultContextOptions)");
+  return guarded([&] {
+    bool use_cache = options ? options->use_kernel_cache != 0 : true;
+    auto impl = std::make_unique<PrismContextImpl>();
+    impl->context = std::make_unique<Context>(selectDevice(selector ? selector : ""), use_cache);
+    *out_context = impl.release();
+    return PRISM_OK;
+  });
+}
+
+PRISM_API void prismReleaseContext(PrismContext context) { delete context; }
+
+PRISM_API PrismStatus prismGetContextDevice(PrismContext context, PrismDeviceInfo* info) {
+  PRISM_REQUIRE(context && info, "prismGetContextDevice: NULL argument");
+  *info = toInfo(context->context->device());
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismSetProgressCallback(PrismContext context, PrismProgressFn fn, void* user) {
+  PRISM_REQUIRE(context, "prismSetProgressCallback: context is NULL");
+  context->progress = fn;
+  context->progress_user = user;
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismLoadScene(const char* path, PrismScene* out_scene) {
+  PRISM_REQUIRE(out_scene, "prismLoadScene: out_scene is NULL");
+  *out_scene = nullptr;
+  PRISM_REQUIRE(path, "prismLoadScene: path is NULL");
+  return guarded([&] { return loadInto(loadSceneFile(path), out_scene); });
+}
+
+PRISM_API PrismStatus prismLoadSceneFromString(const char* json, const char* name, PrismScene* out_scene) {
+  PRISM_REQUIRE(out_scene, "prismLoadSceneFromString: out_scene is NULL");
+  *out_scene = nullptr;
+  PRISM_REQUIRE(json, "prismLoadSceneFromString: json is NULL");
+  return guarded([&] { return loadInto(parseScene(json, name ? name : "<string>"), out_scene); });
+}
+
+PRISM_API void prismReleaseScene(PrismScene scene) { delete scene; }
+
+PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* count) {
+  PRISM_REQUIRE(scene && count, "prismGetSceneWarningCount: NULL argument");
+  *count = static_cast<uint32_t>(scene->scene.warnings.size());
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, const char** message) {
+  PRISM_REQUIRE(scene && message, "prismGetSceneWarning: NULL argument");
+  PRISM_REQUIRE(index < scene->scene.warnings.size(), "prismGetSceneWarning: index out of range");
+  *message = scene->scene.warnings[index].c_str();
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions* options) {
+  PRISM_REQUIRE(scene && options, "prismGetRenderOptions: NULL argument");
+  RenderOptions r = RenderOptions::fromScene(scene->scene);
+  options->struct_size = sizeof(PrismRenderOptions);
+  options->width = static_cast<uint32_t>(r.width);
+  options->height = static_cast<uint32_t>(r.height);
+  options->spp = static_cast<uint32_t>(r.spp);
+  options->max_depth = static_cast<uint32_t>(r.max_depth);
+  options->min_weight = static_cast<float>(r.min_weight);
+  options->seed = r.seed;
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const PrismRenderOptions* options,
+                                  float* rgba, PrismRenderStats* stats) {
+  PRISM_REQUIRE(context && scene && rgba, "prismRender: NULL context, scene or rgba buffer");
+  PRISM_REQUIRE(!options || options->struct_size >= sizeof(PrismRenderOptions),
+                "prismRender: options->struct_size is too small (fill options with prismGetRenderOptions)");
+  PRISM_REQUIRE(!stats || stats->struct_size >= sizeof(PrismRenderStats),
+                "prismRender: stats->struct_size must be set to sizeof(PrismRenderStats)");
+  return guarded([&] {
+    RenderOptions opts = options ? fromC(*options) : RenderOptions::fromScene(scene->scene);
+    opts.validate();
+    if (!context->renderer) context->renderer = std::make_unique<Renderer>(*context->context);
+    ProgressFn progress;
+    if (context->progress)
+      progress = [context](double f) { return context->progress(context->progress_user, f) == 0; };
+    context->has_render = false;
+    context->last = context->renderer->render(scene->scene, opts, progress);
+    context->has_render = true;
+    const RenderResult& r = context->last;
+    std::memcpy(rgba, r.rgba.data(), r.rgba.size() * sizeof(float));
+    if (stats) {
+      size_t size = stats->struct_size;
+      std::memset(stats, 0, size);
+      stats->struct_size = size;
+      stats->seconds = r.stats.seconds;
+      stats->kernel_build_seconds = context->context->takeBuildSeconds();
+      stats->primary_rays = r.stats.rays_by_kind[0];
+      stats->reflected_rays = r.stats.rays_by_kind[1];
+      stats->refracted_rays = r.stats.rays_by_kind[2];
+      stats->shadow_rays = r.stats.rays_by_kind[3];
+      stats->waves = static_cast<uint32_t>(r.stats.waves);
+      for (int d = 0; d < 32; ++d) stats->rays_per_depth[d] = r.stats.rays_per_depth[d];
+    }
+    return PRISM_OK;
+  });
+}
+
+PRISM_API PrismStatus prismGetAovChannels(PrismAov aov, uint32_t* channels) {
+  PRISM_REQUIRE(channels, "prismGetAovChannels: channels is NULL");
+  switch (aov) {
+    case PRISM_AOV_DEPTH:
+    case PRISM_AOV_PRIMID:
+      *channels = 1;
+      return PRISM_OK;
+    case PRISM_AOV_NORMAL:
+    case PRISM_AOV_ALBEDO:
+      *channels = 3;
+      return PRISM_OK;
+  }
+  return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetAovChannels: unknown AOV " + std::to_string(aov));
+}
+
+PRISM_API PrismStatus prismParseAov(const char* name, PrismAov* aov) {
+  PRISM_REQUIRE(name && aov, "prismParseAov: NULL argument");
+  static const struct {
+    const char* name;
+    PrismAov aov;
+  } table[] = {{"depth", PRISM_AOV_DEPTH}, {"normal", PRISM_AOV_NORMAL}, {"primid", PRISM_AOV_PRIMID},
+               {"albedo", PRISM_AOV_ALBEDO}};
+  for (const auto& entry : table)
+    if (std::strcmp(name, entry.name) == 0) {
+      *aov = entry.aov;
+      return PRISM_OK;
+    }
+  return fail(PRISM_ERROR_INVALID_ARGUMENT,
+              std::string("unknown AOV '") + name + "' (expected depth, normal, primid or albedo)");
+}
+
+PRISM_API PrismStatus prismGetAov(PrismContext context, PrismAov aov, float* out, size_t count) {
+  PRISM_REQUIRE(context && out, "prismGetAov: NULL argument");
+  if (!context->has_render) return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetAov: nothing has been rendered yet");
+  uint32_t channels = 0;
+  if (PrismStatus s = prismGetAovChannels(aov, &channels); s != PRISM_OK) return s;
+  const RenderResult& r = context->last;
+  size_t needed = static_cast<size_t>(r.width) * r.height * channels;
+  PRISM_REQUIRE(count >= needed, "prismGetAov: buffer holds " + std::to_string(count) + " floats, the AOV needs " +
+                                     std::to_string(needed));
+  switch (aov) {
+    case PRISM_AOV_DEPTH: std::memcpy(out, r.depth.data(), needed * sizeof(float)); break;
+    case PRISM_AOV_NORMAL: std::memcpy(out, r.normal.data(), needed * sizeof(float)); break;
+    case PRISM_AOV_ALBEDO: std::memcpy(out, r.albedo.data(), needed * sizeof(float)); break;
+    case PRISM_AOV_PRIMID:
+      for (size_t i = 0; i < needed; ++i) out[i] = static_cast<float>(r.primid[i]);
+      break;
+  }
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismWriteImage(const char* path, const float* pixels, uint32_t width, uint32_t height,
+                                      uint32_t channels) {
+  PRISM_REQUIRE(path && pixels, "prismWriteImage: NULL path or pixels");
+  PRISM_REQUIRE(width > 0 && height > 0, "prismWriteImage: empty image");
+  PRISM_REQUIRE(channels == 1 || channels == 3 || channels == 4, "prismWriteImage: channels must be 1, 3 or 4");
+  return guarded([&] {
+    writeImage(path, pixels, static_cast<int>(width), static_cast<int>(height), static_cast<int>(channels));
+    return PRISM_OK;
+  });
+}
+
+}  // extern "C"

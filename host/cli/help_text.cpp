@@ -1,0 +1,125 @@
+#include "help_text.h"
+
+namespace prism_cli {
+
+const char* const kMainHelp =
+    R"(prism - a Whitted/Cook ray tracer for any OpenCL device (PoCL on a CPU, or a GPU)
+
+Usage:
+  prism render SCENE.json -o OUT [options]   render a scene to an image file
+  prism devices                              list the OpenCL devices prism can use
+  prism COMMAND --help                       options of one command
+  prism --help                               this help
+  prism --version                            print the version
+
+Examples:
+  prism devices
+  prism render scenes/whitted.json -o whitted.png
+  prism render scenes/whitted.json -o big.exr --width 1920 --height 1080 --spp 16
+  prism render scenes/whitted.json -o depth.exr --aov depth --device cpu
+
+Output formats, chosen by the extension of OUT:
+  .png  8-bit sRGB      .exr .tif  32-bit float, linear
+  .pfm  float, linear   .hdr       Radiance RGBE, linear
+
+Environment:
+  XDG_CACHE_HOME    compiled kernels are cached in $XDG_CACHE_HOME/prism
+                    (default ~/.cache/prism); the first render on a device compiles
+                    them, later renders load them. Delete the folder or pass
+                    --no-cache to compile afresh.
+  PRISM_KERNEL_DIR  read the OpenCL kernel sources from this folder instead of the
+                    copies built into the library (for kernel development; point it
+                    at the kernels/ folder of a source tree).
+
+Exit codes: 0 success; 1 failure (scene, device or file); 2 bad command line;
+130 interrupted by Ctrl-C.
+
+Documentation: docs/cli.md (this tool), docs/scene-format.md (scene files).
+)";
+
+const char* const kRenderHelp =
+    R"(Usage: prism render SCENE.json -o OUT [options]
+
+Renders the scene file SCENE.json (format: docs/scene-format.md) and writes the image
+to OUT. Options override the scene's own film and render settings; whatever is not
+given keeps the scene's value.
+
+Output:
+  -o, --output OUT  the image to write (required). Its extension picks the format:
+                      .png        8-bit, sRGB-encoded colour, linear alpha
+                      .exr, .tif  32-bit float, linear, RGBA
+                      .pfm        32-bit float, linear, RGB (alpha dropped)
+                      .hdr        Radiance RGBE, linear, RGB (alpha dropped)
+                    Alpha is 1 where the primary ray hit something, 0 where it missed.
+                    The file appears only when complete; a failed render or write
+                    leaves no file.
+  --aov NAME        write an auxiliary image instead of the colour image:
+                      depth   distance along the primary ray to the first hit,
+                              +inf on a miss (1 channel)
+                      normal  world-space unit normal facing the ray, 0 on a miss
+                              (3 channels; a .png stores n*0.5+0.5, like a normal map)
+                      primid  index of the hit primitive, -1 on a miss (1 channel)
+                      albedo  diffuse colour at the hit, 0 on a miss (3 channels)
+                    depth and primid need a float format: .exr, .pfm or .tif
+                    (.hdr works but turns +inf and -1 into other values; .png is
+                    refused). AOVs come from each pixel's first sample.
+
+Image and sampling (default: the scene's value):
+  --width W         image width in pixels (W >= 1)
+  --height H        image height in pixels (H >= 1)
+  --spp N           samples per pixel (N >= 1); with 1, rays pass through pixel centres
+  --max-depth D     levels of reflected and refracted rays after the primary ray
+                    (0: primary rays and shadows only)
+  --min-weight X    adaptive depth control: a ray whose weight (its share of the pixel)
+                    falls below X is not traced; 0 traces every ray to --max-depth
+  --seed S          seed of the sample positions when N > 1 (0 to 2^64-1). The same
+                    scene, seed and device give the same image, bit for bit.
+
+Device:
+  --device D        the OpenCL device: an index from 'prism devices', 'cpu', 'gpu', or
+                    part of the device name (case-insensitive). Default: the first
+                    GPU, else the first device.
+  --no-cache        compile the kernels afresh, without reading or filling the kernel
+                    cache in $XDG_CACHE_HOME/prism (default ~/.cache/prism)
+
+Messages:
+  --quiet           no progress bar and no summary line (warnings and errors still
+                    go to stderr)
+  -h, --help        this help
+
+While rendering, a progress bar appears on stderr if it is a terminal and the render
+takes longer than a second; Ctrl-C stops the render and writes nothing. At the end
+prism prints one summary line on stdout: size, samples, device, time, rays traced by
+kind, Mrays/s and the output file. Warnings about the scene (unknown keys and the
+like) go to stderr as "prism: warning: ...".
+
+Options take their value as '--spp 16' or '--spp=16'.
+
+Examples:
+  prism render scenes/whitted.json -o whitted.png
+  prism render scenes/whitted.json -o preview.png --width 320 --height 180 --spp 1
+  prism render scenes/whitted.json -o final.exr --spp 64 --max-depth 8 --seed 7
+  prism render scenes/whitted.json -o normals.png --aov normal
+  prism render scenes/whitted.json -o out.png --device 1 --no-cache
+
+Exit codes: 0 success; 1 failure (scene, device or file); 2 bad command line;
+130 interrupted. More: docs/cli.md.
+)";
+
+const char* const kDevicesHelp =
+    R"(Usage: prism devices
+
+Lists the OpenCL devices prism can render on, one block per device: the index that
+'prism render --device N' takes, the name, type, vendor, platform, compute units,
+global memory, OpenCL C version and driver. The device used when --device is not
+given (the first GPU, else the first device) is marked "default".
+
+No devices? prism needs an OpenCL runtime. PoCL runs on any CPU; on Debian or Ubuntu:
+  sudo apt-get install pocl-opencl-icd
+GPUs need their vendor's OpenCL driver. 'clinfo' shows what the OpenCL loader sees.
+
+Exit codes: 0 when at least one device is found; 1 when there is none.
+More: docs/cli.md.
+)";
+
+}  // namespace prism_cli

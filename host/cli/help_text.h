@@ -1,0 +1,11 @@
+// The --help texts. They are written for someone who has never used prism: what each
+// command and option does, the defaults, accepted values, and where to read more.
+#pragma once
+
+namespace prism_cli {
+
+extern const char* const kMainHelp;
+extern const char* const kRenderHelp;
+extern const char* const kDevicesHelp;
+
+}  // namespace prism_cli

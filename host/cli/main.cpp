@@ -1,0 +1,75 @@
+// The prism command line: picks the command and turns failures into exit codes.
+// It uses the public C API (prism.h) alone, like any other program embedding prism.
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "args.h"
+#include "commands.h"
+#include "help_text.h"
+#include "prism.h"
+
+namespace {
+
+using namespace prism_cli;
+
+bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h" || arg == "help"; }
+
+int showHelp(const std::vector<std::string>& args) {
+  // "prism help render" reads like "prism render --help".
+  const std::string topic = args.size() > 1 ? args[1] : "";
+  if (topic == "render") {
+    std::fputs(kRenderHelp, stdout);
+  } else if (topic == "devices") {
+    std::fputs(kDevicesHelp, stdout);
+  } else if (topic.empty()) {
+    std::fputs(kMainHelp, stdout);
+  } else {
+    throw UsageError("no help on '" + topic + "' (commands: render, devices)");
+  }
+  return kExitOk;
+}
+
+int dispatch(const std::vector<std::string>& args) {
+  if (args.empty()) throw UsageError("no command given (commands: render, devices)");
+  const std::string& command = args[0];
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (isHelp(command)) return showHelp(args);
+  if (command == "--version" || command == "-V" || command == "version") {
+    std::printf("prism %s\n", prismGetVersionString());
+    return kExitOk;
+  }
+  if (command == "render") return runRender(rest);
+  if (command == "devices") return runDevices(rest);
+  if (!command.empty() && command[0] == '-') {
+    throw UsageError("unknown option '" + command +
+                     "' (options follow a command, as in 'prism render scene.json -o out.png --spp 4')");
+  }
+  throw UsageError("unknown command '" + command + "' (commands: render, devices)");
+}
+
+std::string helpHint(const std::vector<std::string>& args) {
+  if (!args.empty() && (args[0] == "render" || args[0] == "devices")) return "prism " + args[0] + " --help";
+  return "prism --help";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  try {
+    return dispatch(args);
+  } catch (const UsageError& e) {
+    printError(e.what());
+    std::fprintf(stderr, "Try '%s'.\n", helpHint(args).c_str());
+    return kExitUsage;
+  } catch (const std::bad_alloc&) {
+    printError("out of memory (is the image size what you meant?)");
+    return kExitFailure;
+  } catch (const std::exception& e) {
+    printError(e.what());
+    return kExitFailure;
+  }
+}

@@ -1,0 +1,90 @@
+#include "render_args.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "args.h"
+
+namespace prism_cli {
+namespace {
+
+const std::vector<OptionSpec> kRenderOptions = {
+    {"--output", "-o", true},  {"--width", "", true},     {"--height", "", true},
+    {"--spp", "", true},       {"--max-depth", "", true}, {"--min-weight", "", true},
+    {"--device", "", true},    {"--aov", "", true},       {"--seed", "", true},
+    {"--no-cache", "", false}, {"--quiet", "", false},    {"--help", "-h", false},
+};
+
+// The same list as the library's image writer, checked here so that a typo in -o
+// does not cost a whole render.
+bool isKnownImageFormat(const std::string& ext) {
+  return ext == ".png" || ext == ".exr" || ext == ".hdr" || ext == ".pfm" || ext == ".tif" || ext == ".tiff";
+}
+
+void checkOutput(const RenderRequest& request) {
+  const std::string ext = lowerExtension(request.output_path);
+  if (!isKnownImageFormat(ext)) {
+    throw UsageError("--output: unknown image format '" + ext + "' in '" + request.output_path +
+                     "' (expected .png, .exr, .hdr, .pfm, .tif)");
+  }
+  if (request.aov && (*request.aov == PRISM_AOV_DEPTH || *request.aov == PRISM_AOV_PRIMID) && ext == ".png") {
+    const char* name = *request.aov == PRISM_AOV_DEPTH ? "depth" : "primid";
+    throw UsageError(std::string("--aov ") + name + " cannot be written to '" + request.output_path +
+                     "': 8-bit PNG cannot hold its values (+inf, -1, distances over 1); "
+                     "use a float format: .exr, .pfm, .tif or .hdr");
+  }
+}
+
+}  // namespace
+
+std::string lowerExtension(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == slash + 1) return "";
+  std::string ext = path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
+  const ParsedArgs parsed = parseArgs(args, kRenderOptions, "prism render");
+  RenderRequest request;
+  if (parsed.has("--help")) {
+    request.help = true;
+    return request;
+  }
+
+  const auto& positionals = parsed.positionals();
+  if (positionals.empty()) throw UsageError("missing the scene file (prism render SCENE.json -o OUT)");
+  if (positionals.size() > 1) {
+    throw UsageError("one scene file at a time (got '" + positionals[0] + "' and '" + positionals[1] + "')");
+  }
+  request.scene_path = positionals[0];
+
+  const auto output = parsed.text("--output");
+  if (!output) throw UsageError("missing -o OUT, the image file to write (e.g. -o out.png)");
+  if (output->empty()) throw UsageError("--output: empty file name");
+  request.output_path = *output;
+
+  request.width = parsed.uint32("--width", 1);
+  request.height = parsed.uint32("--height", 1);
+  request.spp = parsed.uint32("--spp", 1);
+  request.max_depth = parsed.uint32("--max-depth", 0);
+  request.min_weight = parsed.nonNegativeFloat("--min-weight");
+  request.seed = parsed.uint64("--seed");
+  request.device = parsed.text("--device").value_or("");
+  request.use_kernel_cache = !parsed.has("--no-cache");
+  request.quiet = parsed.has("--quiet");
+
+  if (const auto aov_name = parsed.text("--aov")) {
+    PrismAov aov;
+    if (prismParseAov(aov_name->c_str(), &aov) != PRISM_OK) {
+      throw UsageError("--aov: unknown AOV '" + *aov_name + "' (expected depth, normal, primid or albedo)");
+    }
+    request.aov = aov;
+  }
+  checkOutput(request);
+  return request;
+}
+
+}  // namespace prism_cli

@@ -1,0 +1,34 @@
+// The command line of `prism render`, checked before any work starts: a wrong flag,
+// number or output format fails in milliseconds, not after a long render.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "prism.h"
+
+namespace prism_cli {
+
+struct RenderRequest {
+  bool help = false;  // --help: nothing else is checked
+  std::string scene_path;
+  std::string output_path;
+  // Unset fields keep the scene's own value.
+  std::optional<uint32_t> width, height, spp, max_depth;
+  std::optional<float> min_weight;
+  std::optional<uint64_t> seed;
+  std::string device;  // "" for the library's default
+  std::optional<PrismAov> aov;
+  bool use_kernel_cache = true;
+  bool quiet = false;
+};
+
+// Throws UsageError naming the option at fault.
+RenderRequest parseRenderArgs(const std::vector<std::string>& args);
+
+// The output's extension in lower case, with its dot (".png").
+std::string lowerExtension(const std::string& path);
+
+}  // namespace prism_cli

@@ -1,0 +1,164 @@
+// `prism render`: load the scene, apply the command line's overrides, render on the
+// chosen device, write the colour image or one AOV, and print a summary line.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "help_text.h"
+#include "interrupt.h"
+#include "prism.h"
+#include "progress_bar.h"
+#include "render_args.h"
+
+namespace prism_cli {
+namespace {
+
+struct SceneDeleter {
+  void operator()(PrismSceneImpl* scene) const { prismReleaseScene(scene); }
+};
+struct ContextDeleter {
+  void operator()(PrismContextImpl* context) const { prismReleaseContext(context); }
+};
+using SceneHandle = std::unique_ptr<PrismSceneImpl, SceneDeleter>;
+using ContextHandle = std::unique_ptr<PrismContextImpl, ContextDeleter>;
+
+void printSceneWarnings(PrismScene scene) {
+  uint32_t count = 0;
+  if (prismGetSceneWarningCount(scene, &count) != PRISM_OK) return;
+  for (uint32_t i = 0; i < count; ++i) {
+    const char* message = nullptr;
+    if (prismGetSceneWarning(scene, i, &message) == PRISM_OK && message) printWarning(message);
+  }
+}
+
+void applyOverrides(const RenderRequest& request, PrismRenderOptions& options) {
+  if (request.width) options.width = *request.width;
+  if (request.height) options.height = *request.height;
+  if (request.spp) options.spp = *request.spp;
+  if (request.max_depth) options.max_depth = *request.max_depth;
+  if (request.min_weight) options.min_weight = *request.min_weight;
+  if (request.seed) options.seed = *request.seed;
+}
+
+// Checked before rendering, so a typo in the folder does not cost a render.
+bool outputFolderExists(const std::string& output_path) {
+  const std::filesystem::path folder = std::filesystem::path(output_path).parent_path();
+  std::error_code error;
+  return folder.empty() || std::filesystem::is_directory(folder, error);
+}
+
+int onProgress(void* user, double fraction_done) {
+  static_cast<ProgressBar*>(user)->update(fraction_done);
+  return InterruptGuard::requested() ? 1 : 0;
+}
+
+// 8-bit PNG cannot hold negative components, so normals go in as n*0.5+0.5. The
+// writer sRGB-encodes PNG; decoding first makes the bytes the usual linear
+// normal-map code (128 for 0).
+void normalsForPng(std::vector<float>& pixels) {
+  for (float& v : pixels) {
+    const double code = v * 0.5 + 0.5;
+    v = static_cast<float>(code <= 0.04045 ? code / 12.92 : std::pow((code + 0.055) / 1.055, 2.4));
+  }
+}
+
+int writeOutput(const RenderRequest& request, PrismContext context, const PrismRenderOptions& options,
+                const std::vector<float>& rgba) {
+  const char* path = request.output_path.c_str();
+  if (!request.aov) {
+    if (prismWriteImage(path, rgba.data(), options.width, options.height, 4) != PRISM_OK) return failWithLastError();
+    return kExitOk;
+  }
+  uint32_t channels = 0;
+  if (prismGetAovChannels(*request.aov, &channels) != PRISM_OK) return failWithLastError();
+  std::vector<float> pixels(static_cast<size_t>(options.width) * options.height * channels);
+  if (prismGetAov(context, *request.aov, pixels.data(), pixels.size()) != PRISM_OK) return failWithLastError();
+  if (*request.aov == PRISM_AOV_NORMAL && lowerExtension(request.output_path) == ".png") normalsForPng(pixels);
+  if (prismWriteImage(path, pixels.data(), options.width, options.height, channels) != PRISM_OK) {
+    return failWithLastError();
+  }
+  return kExitOk;
+}
+
+void printSummary(const RenderRequest& request, const PrismRenderOptions& options, const PrismDeviceInfo& device,
+                  const PrismRenderStats& stats) {
+  const uint64_t total = stats.primary_rays + stats.reflected_rays + stats.refracted_rays + stats.shadow_rays;
+  const double mrays = stats.seconds > 0.0 ? static_cast<double>(total) / stats.seconds / 1e6 : 0.0;
+  std::printf(
+      "prism: rendered %ux%u at %u spp on '%s' in %.2f s (kernels %.2f s): %llu primary, %llu reflected, "
+      "%llu refracted, %llu shadow rays, %.2f Mrays/s -> %s\n",
+      static_cast<unsigned>(options.width), static_cast<unsigned>(options.height),
+      static_cast<unsigned>(options.spp), device.name, stats.seconds, stats.kernel_build_seconds,
+      static_cast<unsigned long long>(stats.primary_rays), static_cast<unsigned long long>(stats.reflected_rays),
+      static_cast<unsigned long long>(stats.refracted_rays), static_cast<unsigned long long>(stats.shadow_rays),
+      mrays, request.output_path.c_str());
+}
+
+}  // namespace
+
+int runRender(const std::vector<std::string>& args) {
+  const RenderRequest request = parseRenderArgs(args);
+  if (request.help) {
+    std::fputs(kRenderHelp, stdout);
+    return kExitOk;
+  }
+  if (!outputFolderExists(request.output_path)) {
+    printError("cannot write '" + request.output_path + "': folder '" +
+               std::filesystem::path(request.output_path).parent_path().string() + "' does not exist");
+    return kExitFailure;
+  }
+  const std::string ext = lowerExtension(request.output_path);
+  if (request.aov && ext == ".hdr" && (*request.aov == PRISM_AOV_DEPTH || *request.aov == PRISM_AOV_PRIMID)) {
+    printWarning("'" + request.output_path + "': .hdr stores no +inf or negative values, so misses will not " +
+                 "read back as +inf (depth) or -1 (primid); .exr keeps them");
+  }
+
+  PrismScene raw_scene = nullptr;
+  if (prismLoadScene(request.scene_path.c_str(), &raw_scene) != PRISM_OK) return failWithLastError();
+  const SceneHandle scene(raw_scene);
+  printSceneWarnings(scene.get());
+
+  PrismRenderOptions options{};
+  options.struct_size = sizeof options;
+  if (prismGetRenderOptions(scene.get(), &options) != PRISM_OK) return failWithLastError();
+  applyOverrides(request, options);
+
+  PrismContextOptions context_options{};
+  prismDefaultContextOptions(&context_options);
+  context_options.use_kernel_cache = request.use_kernel_cache ? 1 : 0;
+  PrismContext raw_context = nullptr;
+  const char* selector = request.device.empty() ? nullptr : request.device.c_str();
+  if (prismCreateContext(selector, &context_options, &raw_context) != PRISM_OK) return failWithLastError();
+  const ContextHandle context(raw_context);
+  PrismDeviceInfo device{};
+  if (prismGetContextDevice(context.get(), &device) != PRISM_OK) return failWithLastError();
+
+  std::vector<float> rgba(static_cast<size_t>(options.width) * options.height * 4);
+  PrismRenderStats stats{};
+  stats.struct_size = sizeof stats;
+  PrismStatus status;
+  {
+    const InterruptGuard interrupt;
+    ProgressBar bar(!request.quiet && stderrIsTerminal());
+    if (prismSetProgressCallback(context.get(), onProgress, &bar) != PRISM_OK) return failWithLastError();
+    status = prismRender(context.get(), scene.get(), &options, rgba.data(), &stats);
+    prismSetProgressCallback(context.get(), nullptr, nullptr);
+    bar.finish();
+    if (status != PRISM_OK && InterruptGuard::requested()) {
+      std::fprintf(stderr, "prism: interrupted; nothing written\n");
+      return kExitInterrupted;
+    }
+  }
+  if (status != PRISM_OK) return failWithLastError();
+
+  const int written = writeOutput(request, context.get(), options, rgba);
+  if (written != kExitOk) return written;
+  if (!request.quiet) printSummary(request, options, device, stats);
+  return kExitOk;
+}
+
+}  // namespace prism_cli

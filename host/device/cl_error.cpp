@@ -1,0 +1,57 @@
+#include "device/cl_error.h"
+
+#include <sstream>
+
+namespace prism {
+
+const char* clErrorName(cl_int code) {
+  switch (code) {
+#define PRISM_CASE(c) \
+  case c:             \
+    return #c;
+    PRISM_CASE(CL_SUCCESS)
+    PRISM_CASE(CL_DEVICE_NOT_FOUND)
+    PRISM_CASE(CL_DEVICE_NOT_AVAILABLE)
+    PRISM_CASE(CL_COMPILER_NOT_AVAILABLE)
+    PRISM_CASE(CL_MEM_OBJECT_ALLOCATION_FAILURE)
+    PRISM_CASE(CL_OUT_OF_RESOURCES)
+    PRISM_CASE(CL_OUT_OF_HOST_MEMORY)
+    PRISM_CASE(CL_BUILD_PROGRAM_FAILURE)
+    PRISM_CASE(CL_INVALID_VALUE)
+    PRISM_CASE(CL_INVALID_DEVICE)
+    PRISM_CASE(CL_INVALID_BINARY)
+    PRISM_CASE(CL_INVALID_BUILD_OPTIONS)
+    PRISM_CASE(CL_INVALID_PROGRAM)
+    PRISM_CASE(CL_INVALID_PROGRAM_EXECUTABLE)
+    PRISM_CASE(CL_INVALID_KERNEL_NAME)
+    PRISM_CASE(CL_INVALID_KERNEL)
+    PRISM_CASE(CL_INVALID_ARG_INDEX)
+    PRISM_CASE(CL_INVALID_ARG_VALUE)
+    PRISM_CASE(CL_INVALID_ARG_SIZE)
+    PRISM_CASE(CL_INVALID_KERNEL_ARGS)
+    PRISM_CASE(CL_INVALID_WORK_DIMENSION)
+    PRISM_CASE(CL_INVALID_WORK_GROUP_SIZE)
+    PRISM_CASE(CL_INVALID_WORK_ITEM_SIZE)
+    PRISM_CASE(CL_INVALID_GLOBAL_OFFSET)
+    PRISM_CASE(CL_INVALID_BUFFER_SIZE)
+    PRISM_CASE(CL_INVALID_MEM_OBJECT)
+    PRISM_CASE(CL_INVALID_COMMAND_QUEUE)
+    PRISM_CASE(CL_INVALID_CONTEXT)
+    PRISM_CASE(CL_INVALID_PLATFORM)
+    PRISM_CASE(CL_INVALID_OPERATION)
+    case -1001:
+      return "CL_PLATFORM_NOT_FOUND_KHR";
+#undef PRISM_CASE
+    default:
+      return "CL_UNKNOWN_ERROR";
+  }
+}
+
+void throwClError(cl_int code, const char* call, const char* file, int line) {
+  std::ostringstream os;
+  os << "OpenCL call failed with " << clErrorName(code) << " (" << code << "): " << call << " at " << file << ":"
+     << line;
+  throw DeviceError(os.str());
+}
+
+}  // namespace prism

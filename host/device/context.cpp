@@ -1,0 +1,204 @@
+#include "device/context.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "device/kernel_source.h"
+
+namespace prism {
+namespace {
+
+// Strict IEEE math (no -cl-fast-relaxed-math) keeps images bit-identical run to
+// run; see PERF-NOTES.md. Every program gets these.
+const char* kStandardOptions = "-cl-std=CL1.2";
+
+// Zero-sized OpenCL buffers are invalid; empty scenes still bind a buffer.
+constexpr size_t kMinBufferBytes = 16;
+
+std::string buildLog(cl_program program, cl_device_id device) {
+  size_t size = 0;
+  clGetProgramBuildInfo(program, device, CL_PROGRAM_BUILD_LOG, 0, nullptr, &size);
+  std::string log(size, '\0');
+  clGetProgramBuildInfo(program, device, CL_PROGRAM_BUILD_LOG, size, log.data(), nullptr);
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+  return log;
+}
+
+std::vector<unsigned char> programBinary(cl_program program) {
+  size_t size = 0;
+  if (clGetProgramInfo(program, CL_PROGRAM_BINARY_SIZES, sizeof(size), &size, nullptr) != CL_SUCCESS || size == 0)
+    return {};
+  std::vector<unsigned char> binary(size);
+  unsigned char* ptr = binary.data();
+  if (clGetProgramInfo(program, CL_PROGRAM_BINARIES, sizeof(ptr), &ptr, nullptr) != CL_SUCCESS) return {};
+  return binary;
+}
+
+}  // namespace
+
+// ---- Buffer ------------------------------------------------------------------
+
+Buffer::Buffer(Context& context, size_t bytes) : m_queue(context.queue()), m_bytes(std::max(bytes, kMinBufferBytes)) {
+  cl_int status = CL_SUCCESS;
+  m_mem = clCreateBuffer(context.handle(), CL_MEM_READ_WRITE, m_bytes, nullptr, &status);
+  if (status != CL_SUCCESS) throwClError(status, "clCreateBuffer", __FILE__, __LINE__);
+}
+
+Buffer& Buffer::operator=(Buffer&& other) noexcept {
+  if (this != &other) {
+    if (m_mem) clReleaseMemObject(m_mem);
+    m_mem = std::exchange(other.m_mem, nullptr);
+    m_queue = other.m_queue;
+    m_bytes = std::exchange(other.m_bytes, 0);
+  }
+  return *this;
+}
+
+Buffer::~Buffer() {
+  if (m_mem) clReleaseMemObject(m_mem);  // cannot throw from a destructor; a failure here only leaks
+}
+
+void Buffer::write(const void* data, size_t bytes, size_t offset) {
+  if (bytes == 0) return;
+  PRISM_CL_CHECK(clEnqueueWriteBuffer(m_queue, m_mem, CL_TRUE, offset, bytes, data, 0, nullptr, nullptr));
+}
+
+void Buffer::read(void* data, size_t bytes, size_t offset) const {
+  if (bytes == 0) return;
+  PRISM_CL_CHECK(clEnqueueReadBuffer(m_queue, m_mem, CL_TRUE, offset, bytes, data, 0, nullptr, nullptr));
+}
+
+void Buffer::reserve(Context& context, size_t bytes) {
+  if (m_mem && bytes <= m_bytes) return;
+  *this = Buffer(context, bytes);
+}
+
+// ---- KernelLaunch --------------------------------------------------------------
+
+KernelLaunch& KernelLaunch::raw(size_t size, const void* value) {
+  PRISM_CL_CHECK(clSetKernelArg(m_kernel, m_index, size, value));
+  ++m_index;
+  return *this;
+}
+
+void KernelLaunch::run(size_t count) {
+  if (count == 0) return;
+  size_t kernel_max = 0;
+  PRISM_CL_CHECK(clGetKernelWorkGroupInfo(m_kernel, m_context.device().device, CL_KERNEL_WORK_GROUP_SIZE,
+                                          sizeof(kernel_max), &kernel_max, nullptr));
+  size_t multiple = 1;
+  clGetKernelWorkGroupInfo(m_kernel, m_context.device().device, CL_KERNEL_PREFERRED_WORK_GROUP_SIZE_MULTIPLE,
+                           sizeof(multiple), &multiple, nullptr);
+  // 64 work-items suit both CPU (PoCL is insensitive, PERF-NOTES) and GPUs, as
+  // long as the device and kernel allow it.
+  size_t local = std::min<size_t>({64, kernel_max, m_context.device().max_work_group_size});
+  if (multiple > 1 && multiple <= local) local -= local % multiple;
+  local = std::max<size_t>(local, 1);
+  size_t global = (count + local - 1) / local * local;
+  PRISM_CL_CHECK(
+      clEnqueueNDRangeKernel(m_context.queue(), m_kernel, 1, nullptr, &global, &local, 0, nullptr, nullptr));
+}
+
+// ---- Context -------------------------------------------------------------------
+
+Context::Context(const DeviceDescription& device, bool use_disk_cache)
+    : m_device(device), m_use_disk_cache(use_disk_cache) {
+  cl_int status = CL_SUCCESS;
+  cl_context_properties props[] = {CL_CONTEXT_PLATFORM, reinterpret_cast<cl_context_properties>(device.platform), 0};
+  m_context = clCreateContext(props, 1, &device.device, nullptr, nullptr, &status);
+  if (status != CL_SUCCESS) throwClError(status, "clCreateContext", __FILE__, __LINE__);
+  m_queue = clCreateCommandQueue(m_context, device.device, 0, &status);
+  if (status != CL_SUCCESS) {
+    clReleaseContext(m_context);
+    throwClError(status, "clCreateCommandQueue", __FILE__, __LINE__);
+  }
+}
+
+Context::~Context() {
+  for (auto& [key, p] : m_programs) {
+    for (auto& [name, k] : p.kernels) clReleaseKernel(k);
+    clReleaseProgram(p.program);
+  }
+  if (m_queue) clReleaseCommandQueue(m_queue);
+  if (m_context) clReleaseContext(m_context);
+}
+
+void Context::finish() { PRISM_CL_CHECK(clFinish(m_queue)); }
+
+double Context::takeBuildSeconds() {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  return std::exchange(m_build_seconds, 0.0);
+}
+
+cl_kernel Context::kernel(const std::string& entry_file, const std::string& name, const std::string& options) {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  auto key = entry_file + '\n' + options;
+  auto it = m_programs.find(key);
+  Program& p = it != m_programs.end() ? it->second : program(key, assembleKernelSource(entry_file), options);
+  auto kit = p.kernels.find(name);
+  if (kit != p.kernels.end()) return kit->second;
+  cl_int status = CL_SUCCESS;
+  cl_kernel k = clCreateKernel(p.program, name.c_str(), &status);
+  if (status != CL_SUCCESS) throw DeviceError("kernel '" + name + "' not found in " + entry_file);
+  p.kernels[name] = k;
+  return k;
+}
+
+cl_kernel Context::kernelFromText(const std::string& text, const std::string& program_name,
+                                  const std::string& kernel_name, const std::string& options) {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  auto key = "text:" + program_name + '\n' + options;
+  auto it = m_programs.find(key);
+  Program& p = it != m_programs.end() ? it->second : program(key, assembleKernelText(text, program_name), options);
+  auto kit = p.kernels.find(kernel_name);
+  if (kit != p.kernels.end()) return kit->second;
+  cl_int status = CL_SUCCESS;
+  cl_kernel k = clCreateKernel(p.program, kernel_name.c_str(), &status);
+  if (status != CL_SUCCESS) throw DeviceError("kernel '" + kernel_name + "' not found in " + program_name);
+  p.kernels[kernel_name] = k;
+  return k;
+}
+
+Context::Program& Context::program(const std::string& key, const std::string& source, const std::string& options) {
+  auto start = std::chrono::steady_clock::now();
+  Program p;
+  p.program = buildProgram(source, options, key.substr(0, key.find('\n')));
+  m_build_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return m_programs.emplace(key, std::move(p)).first->second;
+}
+
+cl_program Context::buildProgram(const std::string& source, const std::string& extra_options, const std::string& name) {
+  const std::string options = std::string(kStandardOptions) + (extra_options.empty() ? "" : " " + extra_options);
+  const std::string cache_key = m_disk_cache.keyFor(m_device, options, source);
+  cl_int status = CL_SUCCESS;
+
+  if (m_use_disk_cache) {
+    if (auto binary = m_disk_cache.load(cache_key)) {
+      const unsigned char* ptr = binary->data();
+      size_t size = binary->size();
+      cl_int binary_status = CL_SUCCESS;
+      cl_program program =
+          clCreateProgramWithBinary(m_context, 1, &m_device.device, &size, &ptr, &binary_status, &status);
+      if (status == CL_SUCCESS && binary_status == CL_SUCCESS &&
+          clBuildProgram(program, 1, &m_device.device, options.c_str(), nullptr, nullptr) == CL_SUCCESS)
+        return program;
+      if (program) clReleaseProgram(program);  // any failure is a cache miss
+    }
+  }
+
+  const char* text = source.c_str();
+  size_t length = source.size();
+  cl_program program = clCreateProgramWithSource(m_context, 1, &text, &length, &status);
+  if (status != CL_SUCCESS) throwClError(status, "clCreateProgramWithSource", __FILE__, __LINE__);
+  status = clBuildProgram(program, 1, &m_device.device, options.c_str(), nullptr, nullptr);
+  if (status != CL_SUCCESS) {
+    std::string log = buildLog(program, m_device.device);
+    clReleaseProgram(program);
+    throw KernelBuildError("kernel program " + name + " failed to build on '" + m_device.name + "' (" +
+                           clErrorName(status) + ") with options '" + options + "':\n" + log);
+  }
+  if (m_use_disk_cache) m_disk_cache.store(cache_key, programBinary(program));
+  return program;
+}
+
+}  // namespace prism

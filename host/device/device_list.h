@@ -1,0 +1,32 @@
+// OpenCL platform and device enumeration, and selection of one device from a
+// user's selector string (index, "cpu", "gpu", or a name substring).
+#pragma once
+
+#include <CL/cl.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+struct DeviceDescription {
+  unsigned index = 0;  // position over all platforms, in enumeration order
+  cl_platform_id platform = nullptr;
+  cl_device_id device = nullptr;
+  std::string name, vendor, platform_name, platform_version, driver_version, opencl_c_version;
+  cl_device_type type = 0;
+  unsigned compute_units = 0;
+  std::uint64_t global_memory_bytes = 0;
+  std::size_t max_work_group_size = 1;
+};
+
+// Every device of every platform; empty when no OpenCL runtime is installed.
+std::vector<DeviceDescription> listDevices();
+
+// Picks a device: "" = the first GPU, else the first device; a decimal index;
+// "cpu" / "gpu"; or a case-insensitive substring of the name. Throws DeviceError
+// listing the devices when nothing matches.
+DeviceDescription selectDevice(const std::string& selector);
+
+}  // namespace prism

@@ -1,0 +1,27 @@
+// Compile-time checks that the host compiler lays out the structs shared with
+// the kernels as OpenCL C does: 4-byte scalars, no padding, sizes in multiples
+// of 16 bytes so arrays of them keep float4 alignment.
+#include <cstddef>
+
+#include "kernels/shared/camera_gpu.h"
+#include "kernels/shared/contribution_gpu.h"
+#include "kernels/shared/hit_gpu.h"
+#include "kernels/shared/light_gpu.h"
+#include "kernels/shared/material_gpu.h"
+#include "kernels/shared/object_gpu.h"
+#include "kernels/shared/ray_gpu.h"
+
+static_assert(sizeof(RayGpu) == 64, "RayGpu must be 64 bytes");
+static_assert(offsetof(RayGpu, dx) == 16 && offsetof(RayGpu, wr) == 32 && offsetof(RayGpu, pixel) == 44 &&
+                  offsetof(RayGpu, kind) == 52 && offsetof(RayGpu, sample) == 56,
+              "RayGpu field offsets");
+static_assert(sizeof(HitGpu) == 16 && offsetof(HitGpu, prim) == 4 && offsetof(HitGpu, v) == 12, "HitGpu layout");
+static_assert(sizeof(ObjectGpu) == 112 && offsetof(ObjectGpu, p) == 16 && offsetof(ObjectGpu, world_to_object) == 64,
+              "ObjectGpu layout");
+static_assert(sizeof(MaterialGpu) == 112 && offsetof(MaterialGpu, checker2) == 64 &&
+                  offsetof(MaterialGpu, shininess) == 80 && offsetof(MaterialGpu, model) == 96,
+              "MaterialGpu layout");
+static_assert(sizeof(LightGpu) == 32 && offsetof(LightGpu, color) == 16, "LightGpu layout");
+static_assert(sizeof(CameraGpu) == 80 && offsetof(CameraGpu, width) == 64 && offsetof(CameraGpu, seed) == 76,
+              "CameraGpu layout");
+static_assert(sizeof(ContributionGpu) == 32 && offsetof(ContributionGpu, pixel) == 16, "ContributionGpu layout");

@@ -1,0 +1,35 @@
+// Flattens the host scene model into the plain arrays the kernels read
+// (kernels/shared/*_gpu.h).
+#pragma once
+
+#include <vector>
+
+#include "kernels/shared/camera_gpu.h"
+#include "kernels/shared/light_gpu.h"
+#include "kernels/shared/material_gpu.h"
+#include "kernels/shared/object_gpu.h"
+#include "render/render_options.h"
+#include "scene/scene.h"
+
+namespace prism {
+
+struct GpuScene {
+  std::vector<ObjectGpu> objects;
+  std::vector<MaterialGpu> materials;
+  std::vector<LightGpu> lights;
+  CameraGpu camera{};
+  float ambient[4] = {0, 0, 0, 0};     // render.ambient, rgb
+  float background[4] = {0, 0, 0, 0};  // render.background, rgb
+};
+
+GpuScene flattenScene(const Scene& scene, const RenderOptions& options);
+
+// The camera basis in double precision, shared by flattenScene and the tests'
+// reference ray generator: ray direction for film point (x, y) in [-1, 1]^2 is
+// forward + x * right + y * up (not normalised).
+struct CameraBasis {
+  Vec3 origin, forward, right, up;
+};
+CameraBasis cameraBasis(const Camera& camera, int width, int height);
+
+}  // namespace prism

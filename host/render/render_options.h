@@ -1,0 +1,24 @@
+// Settings of one render: the scene file's film/render blocks, overridden by the
+// caller (CLI flags or the C API).
+#pragma once
+
+#include <cstdint>
+
+#include "scene/scene.h"
+
+namespace prism {
+
+struct RenderOptions {
+  int width = 640;
+  int height = 480;
+  int spp = 1;
+  int max_depth = 5;
+  double min_weight = 0.01;
+  std::uint64_t seed = 0;
+
+  static RenderOptions fromScene(const Scene& scene);
+  // Throws std::invalid_argument naming the field when a value is out of range.
+  void validate() const;
+};
+
+}  // namespace prism

@@ -1,0 +1,551 @@
+// Reads the JSON scene format (docs/scene-format.md) into a Scene. Every value is
+// checked here, so the renderer may trust the Scene it gets; every message names the
+// file and the JSON path. Mesh files and the C API's scene building live elsewhere.
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+namespace {
+
+// ordered_json keeps keys in file order, which fixes material indices.
+using Json = nlohmann::ordered_json;
+
+constexpr int kMaxFilmSize = 32768;
+constexpr int kMaxSpp = 1 << 20;
+constexpr int kMaxDepth = 31;
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+std::string formatNumber(double x) {
+  if (!std::isfinite(x)) return std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
+  if (x == std::floor(x) && std::fabs(x) < 1e15) return std::to_string(static_cast<long long>(x));
+  return Json(x).dump();  // shortest round-trip form
+}
+
+std::string formatVec(const Vec3& v) {
+  return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
+}
+
+// A short, printable rendering of any value for "got ..."; bounded so a huge or
+// deeply nested input cannot produce a huge message (or recurse deeply).
+std::string describe(const Json& v, int depth = 0) {
+  switch (v.type()) {
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::boolean:
+      return v.get<bool>() ? "true" : "false";
+    case Json::value_t::number_integer:
+      return std::to_string(v.get<long long>());
+    case Json::value_t::number_unsigned:
+      return std::to_string(v.get<unsigned long long>());
+    case Json::value_t::number_float:
+      return formatNumber(v.get<double>());
+    case Json::value_t::string: {
+      std::string s = v.get<std::string>();
+      const bool cut = s.size() > 40;
+      if (cut) s.resize(40);
+      return Json(s).dump(-1, ' ', false, Json::error_handler_t::replace) + (cut ? "..." : "");
+    }
+    case Json::value_t::array: {
+      if (v.size() > 16 || depth >= 2) {
+        if (depth > 0) return "[...]";
+        return "an array of " + std::to_string(v.size()) + " elements";
+      }
+      std::string out = "[";
+      for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + describe(v[i], depth + 1);
+      return out + "]";
+    }
+    case Json::value_t::object:
+      return depth > 0 ? "{...}" : "an object";
+    default:
+      return "an unsupported value";
+  }
+}
+
+// Dividing by the largest component first keeps the squares from overflowing or
+// underflowing, so any finite non-zero input gives a unit vector.
+Vec3 unitVector(const Vec3& v) {
+  const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  return normalize(v / m);
+}
+
+std::string member(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+std::string element(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+class SceneParser {
+ public:
+  SceneParser(std::string name, Scene& scene) : m_name(std::move(name)), m_scene(scene) {}
+
+  void parse(const Json& root) {
+    if (!root.is_object()) fail("", "expected a JSON object at top level, got " + describe(root));
+    static const std::vector<std::string> kTop = {"camera",    "film",   "render",
+                                                  "materials", "lights", "objects"};
+    for (auto it = root.begin(); it != root.end(); ++it) {
+      bool known = false;
+      for (const std::string& k : kTop) known = known || it.key() == k;
+      if (!known)
+        m_scene.warnings.push_back(m_name + ": unknown key '" + it.key() +
+                                   "' at top level (known: " + join(kTop) + ")");
+    }
+    // A fixed order, whatever the file's: objects refer to materials by name.
+    if (const Json* v = find(root, "camera")) parseCamera(*v, "camera");
+    if (const Json* v = find(root, "film")) parseFilm(*v, "film");
+    if (const Json* v = find(root, "render")) parseRender(*v, "render");
+    if (const Json* v = find(root, "materials")) parseMaterials(*v, "materials");
+    if (const Json* v = find(root, "lights")) parseLights(*v, "lights");
+    if (const Json* v = find(root, "objects")) parseObjects(*v, "objects");
+  }
+
+ private:
+  using Check = bool (*)(double);
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw SceneError(m_name + ": " + (path.empty() ? "" : path + ": ") + what);
+  }
+  [[noreturn]] void expected(const std::string& path, const std::string& what, const Json& got) const {
+    fail(path, "expected " + what + ", got " + describe(got));
+  }
+
+  static const Json* find(const Json& obj, const char* key) {
+    auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+  }
+
+  const Json& require(const Json& obj, const std::string& path, const char* key) const {
+    const Json* v = find(obj, key);
+    if (!v) fail(path, std::string("missing required key '") + key + "'");
+    return *v;
+  }
+
+  void checkObject(const Json& v, const std::string& path, std::initializer_list<const char*> known) {
+    if (!v.is_object()) expected(path, "an object", v);
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      bool ok = false;
+      for (const char* k : known) ok = ok || it.key() == k;
+      if (!ok)
+        m_scene.warnings.push_back(m_name + ": " + path + ": unknown key '" + it.key() + "' (ignored)");
+    }
+  }
+
+  double number(const Json& v, const std::string& path, const char* what = "a finite number",
+                Check ok = nullptr) const {
+    if (!v.is_number()) expected(path, what, v);
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || (ok && !ok(x))) expected(path, what, v);
+    return x;
+  }
+
+  long long integer(const Json& v, const std::string& path, long long lo, long long hi) const {
+    const std::string what = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!v.is_number()) expected(path, what, v);
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x != std::floor(x) || x < lo || x > hi) expected(path, what, v);
+    return static_cast<long long>(x);
+  }
+
+  std::string string(const Json& v, const std::string& path, const std::string& what) const {
+    if (!v.is_string()) expected(path, what, v);
+    return v.get<std::string>();
+  }
+
+  Vec3 vec3(const Json& v, const std::string& path, const char* what = "a finite number",
+            Check ok = nullptr) const {
+    if (!v.is_array() || v.size() != 3) expected(path, "an array of 3 numbers", v);
+    return {number(v[0], element(path, 0), what, ok), number(v[1], element(path, 1), what, ok),
+            number(v[2], element(path, 2), what, ok)};
+  }
+
+  Vec3 nonZeroVec3(const Json& v, const std::string& path) const {
+    const Vec3 r = vec3(v, path);
+    if (r == Vec3()) expected(path, "a non-zero vector", v);
+    return r;
+  }
+
+  // A colour is 3 non-negative numbers; one number stands for a grey.
+  Vec3 colour(const Json& v, const std::string& path) const {
+    static const Check nonNegative = [](double x) { return x >= 0; };
+    if (v.is_number()) return Vec3::splat(number(v, path, "a non-negative number", nonNegative));
+    if (!v.is_array() || v.size() != 3)
+      expected(path, "a colour (an array of 3 non-negative numbers, or one number for grey)", v);
+    return vec3(v, path, "a non-negative number", nonNegative);
+  }
+
+  void parseCamera(const Json& v, const std::string& path) {
+    checkObject(v, path, {"position", "look_at", "up", "fov"});
+    Camera& c = m_scene.camera;
+    if (const Json* p = find(v, "position")) c.position = vec3(*p, member(path, "position"));
+    if (const Json* p = find(v, "look_at")) c.look_at = vec3(*p, member(path, "look_at"));
+    if (const Json* p = find(v, "up")) c.up = vec3(*p, member(path, "up"));
+    if (const Json* p = find(v, "fov"))
+      c.fov =
+          number(*p, member(path, "fov"), "a number in (0, 180)", [](double x) { return x > 0 && x < 180; });
+    const Vec3 view = c.look_at - c.position;
+    if (view == Vec3())
+      fail(member(path, "look_at"),
+           "expected a point different from camera.position, got " + formatVec(c.look_at) + " for both");
+    // sin(angle between up and view) below 1e-9 leaves no usable image plane.
+    if (c.up == Vec3() || !(length(cross(unitVector(c.up), unitVector(view))) > 1e-9))
+      fail(member(path, "up"), "expected a direction not parallel to the view direction " + formatVec(view) +
+                                   ", got " + formatVec(c.up));
+  }
+
+  void parseFilm(const Json& v, const std::string& path) {
+    checkObject(v, path, {"width", "height", "spp"});
+    Film& f = m_scene.film;
+    if (const Json* p = find(v, "width")) f.width = int(integer(*p, member(path, "width"), 1, kMaxFilmSize));
+    if (const Json* p = find(v, "height"))
+      f.height = int(integer(*p, member(path, "height"), 1, kMaxFilmSize));
+    if (const Json* p = find(v, "spp")) f.spp = int(integer(*p, member(path, "spp"), 1, kMaxSpp));
+  }
+
+  unsigned long long seed(const Json& v, const std::string& path) const {
+    if (v.is_number_unsigned()) return v.get<unsigned long long>();
+    if (v.is_number_float()) {
+      const double x = v.get<double>();
+      if (std::isfinite(x) && x >= 0 && x == std::floor(x) && x < 18446744073709551616.0)
+        return static_cast<unsigned long long>(x);
+    }
+    expected(path, "a non-negative integer", v);
+  }
+
+  void parseRender(const Json& v, const std::string& path) {
+    checkObject(v, path, {"max_depth", "min_weight", "ambient", "background", "seed"});
+    RenderSettings& r = m_scene.render;
+    if (const Json* p = find(v, "max_depth"))
+      r.max_depth = int(integer(*p, member(path, "max_depth"), 0, kMaxDepth));
+    if (const Json* p = find(v, "min_weight"))
+      r.min_weight = number(*p, member(path, "min_weight"), "a number in [0, 1]",
+                            [](double x) { return x >= 0 && x <= 1; });
+    if (const Json* p = find(v, "ambient")) r.ambient = colour(*p, member(path, "ambient"));
+    if (const Json* p = find(v, "background")) r.background = colour(*p, member(path, "background"));
+    if (const Json* p = find(v, "seed")) r.seed = seed(*p, member(path, "seed"));
+  }
+
+  void parseMaterials(const Json& v, const std::string& path) {
+    if (!v.is_object()) expected(path, "an object mapping material names to materials", v);
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      const std::string& name = it.key();
+      if (name.empty()) fail(path, "expected a non-empty material name, got \"\"");
+      Material m = parseMaterial(it.value(), member(path, name));
+      m.name = name;
+      // "default" replaces the built-in material rather than adding a second one.
+      if (name == "default")
+        m_scene.materials[0] = m;
+      else
+        m_scene.materials.push_back(m);
+    }
+  }
+
+  Material parseMaterial(const Json& v, const std::string& path) {
+    checkObject(
+        v, path,
+        {"model", "ambient", "diffuse", "specular", "shininess", "reflect", "transmit", "ior", "texture"});
+    static const Check unit = [](double x) { return x >= 0 && x <= 1; };
+    Material m = defaultMaterial();
+    if (const Json* p = find(v, "model")) {
+      const std::string model = string(*p, member(path, "model"), "a string (phong, blinn)");
+      if (model == "phong")
+        m.model = ShadingModel::Phong;
+      else if (model == "blinn")
+        m.model = ShadingModel::Blinn;
+      else
+        fail(member(path, "model"), "unknown shading model '" + model + "' (expected phong, blinn)");
+    }
+    if (const Json* p = find(v, "ambient")) m.ambient = colour(*p, member(path, "ambient"));
+    if (const Json* p = find(v, "diffuse")) m.diffuse = colour(*p, member(path, "diffuse"));
+    if (const Json* p = find(v, "specular")) m.specular = colour(*p, member(path, "specular"));
+    if (const Json* p = find(v, "shininess"))
+      m.shininess =
+          number(*p, member(path, "shininess"), "a non-negative number", [](double x) { return x >= 0; });
+    if (const Json* p = find(v, "reflect"))
+      m.reflect = number(*p, member(path, "reflect"), "a number in [0, 1]", unit);
+    if (const Json* p = find(v, "transmit"))
+      m.transmit = number(*p, member(path, "transmit"), "a number in [0, 1]", unit);
+    if (const Json* p = find(v, "ior"))
+      m.ior = number(*p, member(path, "ior"), "a positive number", [](double x) { return x > 0; });
+    if (const Json* p = find(v, "texture")) m.texture = parseTexture(*p, member(path, "texture"));
+    return m;
+  }
+
+  Texture parseTexture(const Json& v, const std::string& path) {
+    checkObject(v, path, {"type", "color1", "color2", "scale"});
+    Texture t;
+    const std::string type = string(require(v, path, "type"), member(path, "type"), "a string (checker)");
+    if (type != "checker")
+      fail(member(path, "type"), "unknown texture type '" + type + "' (expected checker)");
+    t.kind = Texture::Kind::Checker;
+    if (const Json* p = find(v, "color1")) t.color1 = colour(*p, member(path, "color1"));
+    if (const Json* p = find(v, "color2")) t.color2 = colour(*p, member(path, "color2"));
+    if (const Json* p = find(v, "scale"))
+      t.scale = number(*p, member(path, "scale"), "a positive number", [](double x) { return x > 0; });
+    return t;
+  }
+
+  void parseLights(const Json& v, const std::string& path) {
+    if (!v.is_array()) expected(path, "an array of lights", v);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::string at = element(path, i);
+      const Json& l = v[i];
+      checkObject(l, at, {"type", "position", "color", "intensity"});
+      if (const Json* p = find(l, "type")) {
+        const std::string type = string(*p, member(at, "type"), "a string (point)");
+        if (type != "point") fail(member(at, "type"), "unknown light type '" + type + "' (expected point)");
+      }
+      Light light;
+      light.position = vec3(require(l, at, "position"), member(at, "position"));
+      if (const Json* p = find(l, "color")) light.color = colour(*p, member(at, "color"));
+      if (const Json* p = find(l, "intensity"))
+        light.intensity =
+            number(*p, member(at, "intensity"), "a non-negative number", [](double x) { return x >= 0; });
+      m_scene.lights.push_back(light);
+    }
+  }
+
+  void parseObjects(const Json& v, const std::string& path) {
+    if (!v.is_array()) expected(path, "an array of objects", v);
+    for (std::size_t i = 0; i < v.size(); ++i) m_scene.objects.push_back(parseObject(v[i], element(path, i)));
+  }
+
+  Object parseObject(const Json& v, const std::string& path) {
+    if (!v.is_object()) expected(path, "an object", v);
+    const std::string typePath = member(path, "type");
+    const std::string type =
+        string(require(v, path, "type"), typePath, "a string (sphere, box, plane, triangle)");
+    Object o;
+    if (type == "sphere") {
+      checkObject(v, path, {"type", "material", "transform", "center", "radius"});
+      o.type = ObjectType::Sphere;
+      o.center = vec3(require(v, path, "center"), member(path, "center"));
+      o.radius = number(require(v, path, "radius"), member(path, "radius"), "a positive number",
+                        [](double x) { return x > 0; });
+    } else if (type == "box") {
+      checkObject(v, path, {"type", "material", "transform", "min", "max"});
+      o.type = ObjectType::Box;
+      o.box_min = vec3(require(v, path, "min"), member(path, "min"));
+      o.box_max = vec3(require(v, path, "max"), member(path, "max"));
+      if (!(o.box_min.x < o.box_max.x && o.box_min.y < o.box_max.y && o.box_min.z < o.box_max.z))
+        fail(member(path, "max"), "expected max > min on every axis, got max " + formatVec(o.box_max) +
+                                      " and min " + formatVec(o.box_min));
+    } else if (type == "plane") {
+      checkObject(v, path, {"type", "material", "transform", "point", "normal"});
+      o.type = ObjectType::Plane;
+      o.point = vec3(require(v, path, "point"), member(path, "point"));
+      o.normal = unitVector(nonZeroVec3(require(v, path, "normal"), member(path, "normal")));
+    } else if (type == "triangle") {
+      checkObject(v, path, {"type", "material", "transform", "vertices"});
+      o.type = ObjectType::Triangle;
+      parseVertices(require(v, path, "vertices"), member(path, "vertices"), o.vertices);
+    } else {
+      fail(typePath, "unknown object type '" + type + "' (expected sphere, box, plane, triangle)");
+    }
+    if (const Json* p = find(v, "material")) o.material = materialIndex(*p, member(path, "material"));
+    if (const Json* p = find(v, "transform")) o.transform = parseTransform(*p, member(path, "transform"));
+    bakeTransform(o);
+    return o;
+  }
+
+  void parseVertices(const Json& v, const std::string& path, Vec3 out[3]) const {
+    if (!v.is_array() || v.size() != 3) expected(path, "an array of 3 points", v);
+    for (int k = 0; k < 3; ++k) out[k] = vec3(v[k], element(path, k));
+    const Vec3 e1 = out[1] - out[0], e2 = out[2] - out[0];
+    // Relative test: the sine of the corner angle, so the scale of the scene does not matter.
+    if (!(length(cross(e1, e2)) > 1e-12 * length(e1) * length(e2)))
+      expected(path, "a non-degenerate triangle (area > 0)", v);
+  }
+
+  // Triangles and planes are stored in world space: the renderer has no
+  // object-space path for them.
+  static void bakeTransform(Object& o) {
+    if (o.transform.isIdentity()) return;
+    if (o.type == ObjectType::Triangle) {
+      for (Vec3& p : o.vertices) p = o.transform.applyPoint(p);
+    } else if (o.type == ObjectType::Plane) {
+      const Transform inv = o.transform.inverse();
+      const Vec3& n = o.normal;  // normals go through the inverse transpose
+      const Vec3 world{inv.m[0][0] * n.x + inv.m[1][0] * n.y + inv.m[2][0] * n.z,
+                       inv.m[0][1] * n.x + inv.m[1][1] * n.y + inv.m[2][1] * n.z,
+                       inv.m[0][2] * n.x + inv.m[1][2] * n.y + inv.m[2][2] * n.z};
+      o.point = o.transform.applyPoint(o.point);
+      o.normal = unitVector(world);
+    } else {
+      return;
+    }
+    o.transform = Transform::identity();
+  }
+
+  int materialIndex(const Json& v, const std::string& path) const {
+    const std::string name = string(v, path, "a material name (a string)");
+    std::vector<std::string> known;
+    for (std::size_t i = 0; i < m_scene.materials.size(); ++i) {
+      if (m_scene.materials[i].name == name) return int(i);
+      known.push_back(m_scene.materials[i].name);
+    }
+    fail(path, "unknown material '" + name + "' (known: " + join(known) + ")");
+  }
+
+  // An object of steps, or an array of them applied first to last.
+  Transform parseTransform(const Json& v, const std::string& path) {
+    Transform t;
+    if (v.is_array()) {
+      for (std::size_t i = 0; i < v.size(); ++i) t = parseTransformStep(v[i], element(path, i)) * t;
+    } else if (v.is_object()) {
+      t = parseTransformStep(v, path);
+    } else {
+      expected(path, "a transform (an object, or an array of objects)", v);
+    }
+    double rowNorms = 1;
+    bool finite = true;
+    for (const auto& row : t.m) {
+      rowNorms *= std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
+      for (double x : row) finite = finite && std::isfinite(x);
+    }
+    const double det = t.determinant();
+    if (!finite || !std::isfinite(det))
+      fail(path, "expected a transform with finite entries, got one that overflows");
+    // |det| <= product of row norms (Hadamard), so this ratio is scale-free.
+    if (!(std::fabs(det) > 1e-12 * rowNorms))
+      fail(path,
+           "expected an invertible transform, got a singular one (determinant " + formatNumber(det) + ")");
+    return t;
+  }
+
+  Transform parseTransformStep(const Json& v, const std::string& path) {
+    checkObject(v, path, {"scale", "rotate", "translate", "matrix"});
+    if (const Json* p = find(v, "matrix")) {
+      for (const char* k : {"scale", "rotate", "translate"})
+        if (find(v, k))
+          fail(path, std::string("expected 'matrix' alone, got 'matrix' together with '") + k + "'");
+      return parseMatrix(*p, member(path, "matrix"));
+    }
+    Transform t;
+    if (const Json* p = find(v, "scale")) {
+      const std::string at = member(path, "scale");
+      const char* what = "a non-zero number or an array of 3 non-zero numbers";
+      static const Check nonZero = [](double x) { return x != 0; };
+      if (p->is_number())
+        t = Transform::scale(Vec3::splat(number(*p, at, what, nonZero)));
+      else if (p->is_array() && p->size() == 3)
+        t = Transform::scale(vec3(*p, at, "a non-zero number", nonZero));
+      else
+        expected(at, what, *p);
+    }
+    if (const Json* p = find(v, "rotate")) {
+      const std::string at = member(path, "rotate");
+      checkObject(*p, at, {"axis", "angle"});
+      const Vec3 axis = nonZeroVec3(require(*p, at, "axis"), member(at, "axis"));
+      const double angle = number(require(*p, at, "angle"), member(at, "angle"));
+      t = Transform::rotate(axis, angle) * t;
+    }
+    if (const Json* p = find(v, "translate"))
+      t = Transform::translate(vec3(*p, member(path, "translate"))) * t;
+    return t;
+  }
+
+  Transform parseMatrix(const Json& v, const std::string& path) const {
+    if (!v.is_array() || v.size() != 16) expected(path, "an array of 16 numbers (4x4, row-major)", v);
+    double a[16];
+    for (int i = 0; i < 16; ++i) a[i] = number(v[i], element(path, i));
+    if (a[12] != 0 || a[13] != 0 || a[14] != 0 || a[15] != 1)
+      fail(path, "expected the last row to be 0 0 0 1, got " + formatNumber(a[12]) + " " +
+                     formatNumber(a[13]) + " " + formatNumber(a[14]) + " " + formatNumber(a[15]));
+    Transform t;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) t.m[r][c] = a[4 * r + c];
+    return t;
+  }
+
+  std::string m_name;
+  Scene& m_scene;
+};
+
+// nlohmann's messages start with "[json.exception.parse_error.101] parse error at
+// line L, column C: "; keep only the reason after that.
+std::string jsonReason(const char* what) {
+  std::string s = what;
+  const std::size_t bracket = s.find("] ");
+  if (s.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos) s.erase(0, bracket + 2);
+  if (s.rfind("parse error", 0) == 0) {
+    const std::size_t colon = s.find(": ");
+    if (colon != std::string::npos) s.erase(0, colon + 2);
+  }
+  return s;
+}
+
+// Line and column (both 1-based) of the byte-th character of text (1-based).
+std::string lineColumn(const std::string& text, std::size_t byte) {
+  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
+  std::size_t line = 1, lineStart = 0;
+  for (std::size_t i = 0; i < end; ++i)
+    if (text[i] == '\n') ++line, lineStart = i + 1;
+  const std::size_t column = (byte > 0 ? byte : 1) - lineStart;
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+Json parseJson(const std::string& text, const std::string& name) {
+  try {
+    return Json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const Json::parse_error& e) {
+    throw SceneError(name + ":" + lineColumn(text, e.byte) + ": invalid JSON: " + jsonReason(e.what()));
+  } catch (const Json::exception& e) {
+    // Number overflow (1e999) comes without a position: find the literal it quotes.
+    const std::string reason = jsonReason(e.what());
+    const std::size_t open = reason.find('\''), close = reason.rfind('\'');
+    std::string where;
+    if (open != std::string::npos && close > open + 1) {
+      const std::size_t at = text.find(reason.substr(open + 1, close - open - 1));
+      if (at != std::string::npos) where = ":" + lineColumn(text, at + 1);
+    }
+    throw SceneError(name + where + ": invalid JSON: " + reason);
+  }
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& json_text, const std::string& name) {
+  const Json root = parseJson(json_text, name);
+  Scene scene;
+  scene.source = name;
+  scene.materials.push_back(defaultMaterial());
+  try {
+    SceneParser(name, scene).parse(root);
+  } catch (const Json::exception& e) {
+    // The parser checks types before every access; this is a last line of defence.
+    throw SceneError(name + ": unexpected value: " + jsonReason(e.what()));
+  }
+  return scene;
+}
+
+Scene loadSceneFile(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw SceneIoError(path + ": cannot open scene file: " + std::strerror(errno));
+  std::string text;
+  char buf[65536];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  const bool failed = std::ferror(f) != 0;
+  const int err = errno;
+  std::fclose(f);
+  // A directory opens but cannot be read (EISDIR).
+  if (failed) throw SceneIoError(path + ": cannot read scene file: " + std::strerror(err));
+  return parseScene(text, path);
+}
+
+}  // namespace prism

@@ -1,0 +1,175 @@
+/* prism.h -- the public C API of the prism ray tracer (C99).
+ *
+ * Every call returns a PrismStatus (or nothing) and never aborts or throws. After a
+ * failed call, prismGetLastError() returns a message for the calling thread that names
+ * the file, key or argument at fault and the reason. Handles are opaque; each New/Create
+ * call has a matching Release.
+ *
+ * Typical use:
+ *   PrismContext ctx;  prismCreateContext(NULL, &ctx);
+ *   PrismScene scene;  prismLoadScene(ctx, "scene.json", &scene);
+ *   PrismRenderOptions opts; prismGetRenderOptions(scene, &opts);
+ *   float* rgba = malloc(4 * sizeof(float) * opts.width * opts.height);
+ *   prismRender(ctx, scene, &opts, rgba, NULL);
+ *   prismWriteImage("out.png", rgba, opts.width, opts.height, 4);
+ */
+#ifndef PRISM_H
+#define PRISM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "prism_config.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum PrismStatus {
+  PRISM_OK = 0,
+  PRISM_ERROR_INVALID_ARGUMENT = 1, /* a NULL handle, a bad size, an unknown name */
+  PRISM_ERROR_IO = 2,               /* a file could not be read or written */
+  PRISM_ERROR_PARSE = 3,            /* a scene file is malformed or holds bad values */
+  PRISM_ERROR_DEVICE = 4,           /* no such OpenCL device, or an OpenCL call failed */
+  PRISM_ERROR_KERNEL_BUILD = 5,     /* a kernel failed to compile; the message holds the log */
+  PRISM_ERROR_OUT_OF_MEMORY = 6,
+  PRISM_ERROR_INVALID_OPERATION = 7, /* e.g. reading an AOV before any render */
+  PRISM_ERROR_UNKNOWN = 8
+} PrismStatus;
+
+typedef struct PrismContextImpl* PrismContext; /* one OpenCL device, its queue and programs */
+typedef struct PrismSceneImpl* PrismScene;     /* a loaded scene, independent of any device */
+
+/* ---- version and errors ------------------------------------------------------ */
+
+/* The library's version as major << 16 | minor << 8 | patch. */
+PRISM_API uint32_t prismGetVersion(void);
+/* The library's version as "major.minor.patch". */
+PRISM_API const char* prismGetVersionString(void);
+/* The message of the last failed call on this thread ("" if none). Valid until the
+ * next failing call on the same thread. */
+PRISM_API const char* prismGetLastError(void);
+/* A short constant name for a status code, e.g. "PRISM_ERROR_PARSE". */
+PRISM_API const char* prismStatusName(PrismStatus status);
+
+/* ---- devices -------------------------------------------------------------------- */
+
+typedef enum PrismDeviceType {
+  PRISM_DEVICE_CPU = 1,
+  PRISM_DEVICE_GPU = 2,
+  PRISM_DEVICE_ACCELERATOR = 4,
+  PRISM_DEVICE_OTHER = 8
+} PrismDeviceType;
+
+typedef struct PrismDeviceInfo {
+  uint32_t index;                /* the number --device N selects */
+  char name[256];
+  char vendor[256];
+  char platform[256];
+  char driver_version[128];
+  char opencl_c_version[128];
+  PrismDeviceType type;
+  uint32_t compute_units;
+  uint64_t global_memory_bytes;
+} PrismDeviceInfo;
+
+/* Number of OpenCL devices over all platforms (0 when there is no OpenCL runtime). */
+PRISM_API PrismStatus prismGetDeviceCount(uint32_t* count);
+/* Description of device `index` (0-based, in the order prismGetDeviceCount counts). */
+PRISM_API PrismStatus prismGetDeviceInfo(uint32_t index, PrismDeviceInfo* info);
+
+/* ---- contexts ------------------------------------------------------------------ */
+
+typedef struct PrismContextOptions {
+  size_t struct_size;   /* sizeof(PrismContextOptions); set by prismDefaultContextOptions */
+  int use_kernel_cache; /* nonzero: keep compiled kernels in the on-disk cache (default 1) */
+} PrismContextOptions;
+
+PRISM_API void prismDefaultContextOptions(PrismContextOptions* options);
+
+/* Creates a context on the device chosen by `selector`: NULL or "" for the default
+ * (the first GPU, else the first device), a decimal index, "cpu", "gpu", or a
+ * case-insensitive substring of the device name. `options` may be NULL. */
+PRISM_API PrismStatus prismCreateContext(const char* selector, const PrismContextOptions* options,
+                                         PrismContext* out_context);
+PRISM_API void prismReleaseContext(PrismContext context); /* NULL is a no-op */
+/* The description of the context's device. */
+PRISM_API PrismStatus prismGetContextDevice(PrismContext context, PrismDeviceInfo* info);
+
+/* Called during prismRender with the fraction of work done (0..1); return nonzero
+ * to cancel the render (prismRender then fails with PRISM_ERROR_INVALID_OPERATION). */
+typedef int (*PrismProgressFn)(void* user, double fraction_done);
+PRISM_API PrismStatus prismSetProgressCallback(PrismContext context, PrismProgressFn fn, void* user);
+
+/* ---- scenes -------------------------------------------------------------------- */
+
+/* Loads a JSON scene file (docs/scene-format.md). */
+PRISM_API PrismStatus prismLoadScene(const char* path, PrismScene* out_scene);
+/* Parses a scene from JSON text; `name` stands for the file in error messages. */
+PRISM_API PrismStatus prismLoadSceneFromString(const char* json, const char* name, PrismScene* out_scene);
+PRISM_API void prismReleaseScene(PrismScene scene); /* NULL is a no-op */
+/* Warnings found while loading (unknown keys and the like), one per index. */
+PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* count);
+PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, const char** message);
+
+/* ---- rendering ----------------------------------------------------------------- */
+
+typedef struct PrismRenderOptions {
+  size_t struct_size;  /* sizeof(PrismRenderOptions); set by prismGetRenderOptions */
+  uint32_t width;      /* film size in pixels */
+  uint32_t height;
+  uint32_t spp;        /* samples per pixel; 1 traces through pixel centres */
+  uint32_t max_depth;  /* levels of reflected/refracted rays after the primary ray */
+  float min_weight;    /* adaptive depth control: a ray whose weight falls under this is not traced */
+  uint64_t seed;       /* seeds the sample positions when spp > 1 */
+} PrismRenderOptions;
+
+/* Fills `options` with the scene's own settings (film and render blocks). */
+PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions* options);
+
+typedef struct PrismRenderStats {
+  size_t struct_size;          /* sizeof(PrismRenderStats); set by the caller */
+  double seconds;              /* wall time of the render, kernels and transfers */
+  double kernel_build_seconds; /* time spent building or loading kernels in this call */
+  uint64_t primary_rays;
+  uint64_t reflected_rays;
+  uint64_t refracted_rays;
+  uint64_t shadow_rays;
+  uint32_t waves;              /* deepest wave reached + 1 */
+  uint64_t rays_per_depth[32]; /* camera + secondary rays traced at each depth (0 = primary) */
+} PrismRenderStats;
+
+/* Renders `scene` with `options` (NULL: the scene's own) into `rgba`, a caller-owned
+ * buffer of width*height*4 floats, rows top to bottom, linear colour, alpha 1 on a hit
+ * and 0 where the primary ray missed. `stats` may be NULL. */
+PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const PrismRenderOptions* options,
+                                  float* rgba, PrismRenderStats* stats);
+
+typedef enum PrismAov {
+  PRISM_AOV_DEPTH = 0,  /* 1 channel: distance along the unit primary ray, +inf on a miss */
+  PRISM_AOV_NORMAL = 1, /* 3 channels: world-space unit normal facing the camera ray, 0 on a miss */
+  PRISM_AOV_PRIMID = 2, /* 1 channel: index of the hit primitive (object), -1 on a miss */
+  PRISM_AOV_ALBEDO = 3  /* 3 channels: diffuse colour (with texture) at the hit, 0 on a miss */
+} PrismAov;
+
+/* Channels of an AOV (1 or 3). */
+PRISM_API PrismStatus prismGetAovChannels(PrismAov aov, uint32_t* channels);
+/* Parses "depth", "normal", "primid" or "albedo". */
+PRISM_API PrismStatus prismParseAov(const char* name, PrismAov* aov);
+/* Copies an AOV of the context's last render into `out` (width*height*channels floats;
+ * `count` is the buffer's size in floats). AOVs come from each pixel's first sample. */
+PRISM_API PrismStatus prismGetAov(PrismContext context, PrismAov aov, float* out, size_t count);
+
+/* ---- images -------------------------------------------------------------------- */
+
+/* Writes linear float pixels (rows top to bottom, `channels` of 1, 3 or 4) to `path`
+ * through OpenImageIO; the extension picks the format: .png (8-bit sRGB), .exr, .hdr,
+ * .pfm (linear float), .tif. */
+PRISM_API PrismStatus prismWriteImage(const char* path, const float* pixels, uint32_t width, uint32_t height,
+                                      uint32_t channels);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* PRISM_H */

@@ -1,0 +1,44 @@
+/* Brute force: every object against every ray. The reference the acceleration
+ * structures are checked against, and the only choice until they exist. */
+#ifndef PRISM_ACCEL_NONE_H
+#define PRISM_ACCEL_NONE_H
+
+#include "geometry/object.h"
+#include "shared/material_gpu.h"
+
+#define ACCEL_PARAMS __global const ObjectGpu *objects, int object_count
+#define ACCEL_ARGS objects, object_count
+
+inline bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
+  hit->t = PRISM_INF;
+  hit->prim = -1;
+  hit->u = 0.0f;
+  hit->v = 0.0f;
+  float best = tmax;
+  for (int i = 0; i < object_count; ++i) {
+    float t, u, v;
+    if (object_intersect(&objects[i], o, d, tmin, best, &t, &u, &v)) {
+      best = t;
+      hit->t = t;
+      hit->prim = i;
+      hit->u = u;
+      hit->v = v;
+    }
+  }
+  return hit->prim >= 0;
+}
+
+/* Fraction of light a shadow feeler carries from tmin to tmax: an opaque object
+ * blocks it, each semitransparent object it meets multiplies it by k_trans once. */
+inline float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
+                                 float tmax) {
+  float carried = 1.0f;
+  for (int i = 0; i < object_count && carried > 0.0f; ++i) {
+    float t, u, v;
+    if (object_intersect(&objects[i], o, d, tmin, tmax, &t, &u, &v))
+      carried *= materials[objects[i].material].transmit;
+  }
+  return carried;
+}
+
+#endif

@@ -1,0 +1,19 @@
+/* Counter-based random numbers: a value depends only on (seed, pixel, sample,
+ * dimension), never on scheduling, so images are identical run to run. */
+#ifndef PRISM_COMMON_RNG_H
+#define PRISM_COMMON_RNG_H
+
+/* PCG-style integer hash (Jarzynski and Olano, "Hash Functions for GPU Rendering", 2020). */
+inline uint pcg_hash(uint v) {
+  uint state = v * 747796405u + 2891336453u;
+  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+
+/* Uniform float in [0, 1) from 24 random bits. */
+inline float rng_uniform(uint seed, uint pixel, uint sample, uint dimension) {
+  uint h = pcg_hash(seed ^ pcg_hash(pixel ^ pcg_hash(sample ^ pcg_hash(dimension))));
+  return (float)(h >> 8) * (1.0f / 16777216.0f);
+}
+
+#endif

@@ -1,0 +1,17 @@
+/* count_rays: the first pass of stable queue compaction. Work-item b counts the
+ * live rays of each kind in slots [b*block, (b+1)*block); the host turns the
+ * counts into output offsets (an exclusive scan), then scatter_rays moves them. */
+#include "shared/ray_gpu.h"
+
+__kernel void count_rays(__global const RayGpu* rays, int count, int block, __global int* counts) {
+  int b = get_global_id(0);
+  int begin = b * block;
+  if (begin >= count) return;
+  int end = min(count, begin + block);
+  int c[RAY_KIND_COUNT] = {0, 0, 0, 0};
+  for (int i = begin; i < end; ++i) {
+    int kind = rays[i].kind;
+    if (kind >= 0) c[kind] += 1;
+  }
+  for (int kind = 0; kind < RAY_KIND_COUNT; ++kind) counts[b * RAY_KIND_COUNT + kind] = c[kind];
+}

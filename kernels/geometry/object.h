@@ -1,0 +1,84 @@
+/* Intersection and surface queries for any ObjectGpu, dispatching on its type.
+ * Transformed spheres and boxes are intersected in object space: the ray is
+ * mapped by the world-to-object matrix without renormalising, so t is the same
+ * parameter in both spaces. */
+#ifndef PRISM_GEOMETRY_OBJECT_H
+#define PRISM_GEOMETRY_OBJECT_H
+
+#include "common/math.h"
+#include "geometry/box.h"
+#include "geometry/plane.h"
+#include "geometry/sphere.h"
+#include "geometry/triangle.h"
+#include "shared/hit_gpu.h"
+#include "shared/object_gpu.h"
+
+inline float3 xform_vector(__global const float* m, float3 v) {
+  return (float3)(m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
+                  m[8] * v.x + m[9] * v.y + m[10] * v.z);
+}
+inline float3 xform_point(__global const float* m, float3 p) {
+  return xform_vector(m, p) + (float3)(m[3], m[7], m[11]);
+}
+/* Object-space normal to world space: the transpose of the world-to-object
+ * linear part is the inverse transpose of object-to-world. */
+inline float3 xform_normal(__global const float* m, float3 n) {
+  return (float3)(m[0] * n.x + m[4] * n.y + m[8] * n.z, m[1] * n.x + m[5] * n.y + m[9] * n.z,
+                  m[2] * n.x + m[6] * n.y + m[10] * n.z);
+}
+
+inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, float tmin, float tmax, float* t,
+                             float* u, float* v) {
+  if (ob->has_transform) {
+    o = xform_point(ob->world_to_object, o);
+    d = xform_vector(ob->world_to_object, d);
+  }
+  __global const float* p = ob->p;
+  *u = 0.0f;
+  *v = 0.0f;
+  switch (ob->type) {
+    case OBJECT_SPHERE:
+      return sphere_intersect(o, d, tmin, tmax, load3g(p), p[3], t);
+    case OBJECT_BOX:
+      return box_intersect(o, d, tmin, tmax, load3g(p), load3g(p + 3), t);
+    case OBJECT_PLANE:
+      return plane_intersect(o, d, tmin, tmax, load3g(p), load3g(p + 3), t);
+    case OBJECT_TRIANGLE:
+      return triangle_intersect(o, d, tmin, tmax, load3g(p), load3g(p + 3), load3g(p + 6), t, u, v);
+  }
+  return false;
+}
+
+/* Geometric unit normal (outward for closed objects) and texture coordinates at
+ * the hit of ray (o, d). */
+inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, HitGpu hit, float3* normal,
+                           float2* uv) {
+  if (ob->has_transform) {
+    o = xform_point(ob->world_to_object, o);
+    d = xform_vector(ob->world_to_object, d);
+  }
+  float3 p = o + hit.t * d;
+  __global const float* q = ob->p;
+  float3 n;
+  switch (ob->type) {
+    case OBJECT_SPHERE:
+      n = sphere_normal(p, load3g(q));
+      *uv = sphere_uv(n);
+      break;
+    case OBJECT_BOX:
+      n = box_normal(p, load3g(q), load3g(q + 3));
+      *uv = box_uv(p, n);
+      break;
+    case OBJECT_PLANE:
+      n = load3g(q + 3);
+      *uv = plane_uv(p, load3g(q), n);
+      break;
+    default:
+      n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));
+      *uv = (float2)(hit.u, hit.v);
+      break;
+  }
+  *normal = ob->has_transform ? normalize(xform_normal(ob->world_to_object, n)) : n;
+}
+
+#endif

@@ -1,0 +1,23 @@
+/* The local illumination models: diffuse (Lambert) plus the specular highlight of
+ * Phong (R·V)^n or Blinn (N·H)^n, for one light. */
+#ifndef PRISM_SHADING_LOCAL_H
+#define PRISM_SHADING_LOCAL_H
+
+#include "shading/optics.h"
+#include "shared/material_gpu.h"
+
+/* n: unit normal facing the viewer, l: unit direction to the light, v: unit
+ * direction to the viewer; n·l > 0 is the caller's precondition. */
+inline float3 local_light_term(__global const MaterialGpu* m, float3 kd, float3 n, float3 l, float3 v) {
+  float n_dot_l = dot(n, l);
+  float spec_base;
+  if (m->model == SHADING_BLINN) {
+    spec_base = dot(n, normalize(l + v));
+  } else {
+    spec_base = dot(reflect_dir(-l, n), v);
+  }
+  float spec = spec_base > 0.0f ? pow(spec_base, m->shininess) : 0.0f;
+  return kd * n_dot_l + load3g(m->specular) * spec;
+}
+
+#endif

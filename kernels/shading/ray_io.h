@@ -1,0 +1,38 @@
+/* Reading and writing RayGpu fields as vectors. */
+#ifndef PRISM_SHADING_RAY_IO_H
+#define PRISM_SHADING_RAY_IO_H
+
+#include "shared/ray_gpu.h"
+
+inline float3 ray_origin(RayGpu r) { return (float3)(r.ox, r.oy, r.oz); }
+inline float3 ray_dir(RayGpu r) { return (float3)(r.dx, r.dy, r.dz); }
+inline float3 ray_weight(RayGpu r) { return (float3)(r.wr, r.wg, r.wb); }
+
+inline RayGpu ray_make(float3 o, float3 d, float tmin, float tmax, float3 w, int pixel, int depth, int kind,
+                       int sample) {
+  RayGpu r;
+  r.ox = o.x;
+  r.oy = o.y;
+  r.oz = o.z;
+  r.tmin = tmin;
+  r.dx = d.x;
+  r.dy = d.y;
+  r.dz = d.z;
+  r.tmax = tmax;
+  r.wr = w.x;
+  r.wg = w.y;
+  r.wb = w.z;
+  r.pixel = pixel;
+  r.depth = depth;
+  r.kind = kind;
+  r.sample = sample;
+  r.pad = 0;
+  return r;
+}
+
+inline RayGpu ray_empty(void) {
+  RayGpu r = ray_make((float3)(0.0f), (float3)(0.0f), 0.0f, 0.0f, (float3)(0.0f), -1, 0, RAY_KIND_NONE, 0);
+  return r;
+}
+
+#endif

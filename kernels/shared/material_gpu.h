@@ -1,0 +1,27 @@
+/* A Whitted material as the kernels see it; shared by host and kernels. */
+#ifndef PRISM_MATERIAL_GPU_H
+#define PRISM_MATERIAL_GPU_H
+
+#define SHADING_PHONG 0
+#define SHADING_BLINN 1
+
+#define TEXTURE_NONE 0
+#define TEXTURE_CHECKER 1
+
+typedef struct MaterialGpu {
+  float ambient[4]; /* rgb + unused lane, so each colour is one float4 */
+  float diffuse[4];
+  float specular[4];
+  float checker1[4]; /* checker colours; they multiply ambient and diffuse */
+  float checker2[4];
+  float shininess;
+  float reflect;  /* k_refl */
+  float transmit; /* k_trans */
+  float ior;
+  int model;      /* SHADING_* */
+  int texture;    /* TEXTURE_* */
+  float texture_scale;
+  int pad;
+} MaterialGpu;
+
+#endif

@@ -1,0 +1,23 @@
+/* One primitive as the kernels see it; shared by host and kernels. */
+#ifndef PRISM_OBJECT_GPU_H
+#define PRISM_OBJECT_GPU_H
+
+#define OBJECT_SPHERE 0
+#define OBJECT_BOX 1
+#define OBJECT_PLANE 2
+#define OBJECT_TRIANGLE 3
+
+typedef struct ObjectGpu {
+  int type;     /* OBJECT_* */
+  int material; /* index into the material array */
+  int has_transform; /* nonzero: intersect in object space through `world_to_object` */
+  int pad;      /* aligns the float arrays to 16 bytes */
+  /* sphere: center xyz, radius; box: min xyz, max xyz; plane: point xyz, normal xyz;
+   * triangle: v0 xyz, v1 xyz, v2 xyz (world space). */
+  float p[12];
+  /* Rows of the 3x4 world-to-object affine matrix. Object-space normals map back
+   * with its transposed linear part. */
+  float world_to_object[12];
+} ObjectGpu;
+
+#endif

@@ -1,0 +1,116 @@
+/* The C API used from C: list devices, create a context, load and render a
+ * scene, read AOVs, and get clear errors for bad input. argv[1] is the scenes
+ * folder. Exits non-zero on the first failed check. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "prism.h"
+
+static int failures = 0;
+
+#define CHECK(cond)                                                    \
+  do {                                                                 \
+    if (!(cond)) {                                                     \
+      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
+      ++failures;                                                      \
+    }                                                                  \
+  } while (0)
+
+#define CHECK_OK(call)                                                                        \
+  do {                                                                                        \
+    PrismStatus s_ = (call);                                                                  \
+    if (s_ != PRISM_OK) {                                                                     \
+      fprintf(stderr, "%s:%d: %s returned %s: %s\n", __FILE__, __LINE__, #call, prismStatusName(s_), \
+              prismGetLastError());                                                           \
+      return 1;                                                                               \
+    }                                                                                         \
+  } while (0)
+
+int main(int argc, char** argv) {
+  char path[4096];
+  uint32_t count = 0, channels = 0;
+  PrismDeviceInfo info;
+  PrismContext ctx = NULL;
+  PrismScene scene = NULL;
+  PrismRenderOptions opts;
+  PrismRenderStats stats;
+  float *rgba, *depth, *primid;
+  size_t pixels, i, hits = 0;
+  float dummy = 0;
+
+  if (argc < 2) {
+    fprintf(stderr, "usage: c_api_test SCENES_DIR\n");
+    return 2;
+  }
+  CHECK(prismGetVersion() == ((PRISM_VERSION_MAJOR << 16) | (PRISM_VERSION_MINOR << 8) | PRISM_VERSION_PATCH));
+  CHECK(strcmp(prismGetVersionString(), PRISM_VERSION_STRING) == 0);
+
+  CHECK_OK(prismGetDeviceCount(&count));
+  CHECK(count > 0);
+  CHECK_OK(prismGetDeviceInfo(0, &info));
+  CHECK(info.name[0] != '\0' && info.compute_units > 0);
+  CHECK(prismGetDeviceInfo(count, &info) == PRISM_ERROR_INVALID_ARGUMENT);
+  CHECK(strstr(prismGetLastError(), "no device") != NULL);
+
+  /* Errors: NULL out-pointers, unknown device, missing file, malformed JSON. */
+  CHECK(prismCreateContext(NULL, NULL, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
+  CHECK(prismCreateContext("no-such-device-name", NULL, &ctx) == PRISM_ERROR_DEVICE && ctx == NULL);
+  CHECK(strstr(prismGetLastError(), "no-such-device-name") != NULL);
+  CHECK(prismLoadScene("/nonexistent/scene.json", &scene) == PRISM_ERROR_IO && scene == NULL);
+  CHECK(strstr(prismGetLastError(), "/nonexistent/scene.json") != NULL);
+  CHECK(prismLoadSceneFromString("{\"objects\": [ {\"type\": \"sphere\"} ]}", "inline.json", &scene) ==
+        PRISM_ERROR_PARSE);
+  CHECK(strstr(prismGetLastError(), "inline.json") != NULL && strstr(prismGetLastError(), "objects[0]") != NULL);
+  CHECK(prismRender(NULL, NULL, NULL, NULL, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
+
+  CHECK_OK(prismCreateContext("cpu", NULL, &ctx));
+  CHECK(prismGetAov(ctx, PRISM_AOV_DEPTH, &dummy, 1) == PRISM_ERROR_INVALID_OPERATION);
+  snprintf(path, sizeof path, "%s/whitted.json", argv[1]);
+  CHECK_OK(prismLoadScene(path, &scene));
+  CHECK_OK(prismGetRenderOptions(scene, &opts));
+  opts.width = 48;
+  opts.height = 27;
+  pixels = (size_t)opts.width * opts.height;
+  rgba = (float*)malloc(pixels * 4 * sizeof(float));
+  depth = (float*)malloc(pixels * sizeof(float));
+  primid = (float*)malloc(pixels * sizeof(float));
+  memset(&stats, 0, sizeof stats);
+  stats.struct_size = sizeof stats;
+  CHECK_OK(prismRender(ctx, scene, &opts, rgba, &stats));
+  CHECK(stats.primary_rays == pixels);
+  CHECK(stats.rays_per_depth[0] == pixels);
+
+  CHECK_OK(prismGetAovChannels(PRISM_AOV_DEPTH, &channels));
+  CHECK(channels == 1);
+  CHECK(prismGetAov(ctx, PRISM_AOV_DEPTH, depth, pixels - 1) == PRISM_ERROR_INVALID_ARGUMENT);
+  CHECK_OK(prismGetAov(ctx, PRISM_AOV_DEPTH, depth, pixels));
+  CHECK_OK(prismGetAov(ctx, PRISM_AOV_PRIMID, primid, pixels));
+  /* Where the primary ray hit, depth is finite and positive and alpha is 1; where
+   * it missed, depth is +inf, primid -1 and alpha 0. */
+  for (i = 0; i < pixels; ++i) {
+    if (primid[i] >= 0) {
+      ++hits;
+      CHECK(isfinite(depth[i]) && depth[i] > 0);
+      CHECK(rgba[4 * i + 3] == 1.0f);
+    } else {
+      CHECK(primid[i] == -1.0f && isinf(depth[i]) && rgba[4 * i + 3] == 0.0f);
+    }
+  }
+  CHECK(hits > 0 && hits < pixels); /* the default scene shows sky and objects */
+
+  free(rgba);
+  free(depth);
+  free(primid);
+  prismReleaseScene(scene);
+  prismReleaseContext(ctx);
+  prismReleaseScene(NULL);
+  prismReleaseContext(NULL);
+  if (failures) {
+    fprintf(stderr, "%d check(s) failed\n", failures);
+    return 1;
+  }
+  printf("c_api_test: all checks passed\n");
+  return 0;
+}

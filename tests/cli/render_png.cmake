@@ -1,0 +1,60 @@
+# Renders the Whitted example small: the colour image to PNG and the depth AOV to EXR
+# succeed and write real files; the depth AOV to PNG is refused before rendering.
+# Run as: cmake -DPRISM=<exe> -DSOURCE_DIR=<repo> -DWORK_DIR=<scratch> -P render_png.cmake
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(scene "${SOURCE_DIR}/scenes/whitted.json")
+set(size --width 64 --height 36)
+
+function(run_prism)
+  execute_process(COMMAND ${PRISM} ${ARGN}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 900)
+  set(rc "${rc}" PARENT_SCOPE)
+  set(out "${out}" PARENT_SCOPE)
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
+
+# expect_magic(<file> <hex of its first bytes>)
+function(expect_magic file magic)
+  if(NOT EXISTS "${file}")
+    message(FATAL_ERROR "${file} was not written")
+  endif()
+  string(LENGTH "${magic}" hex_length)
+  math(EXPR byte_count "${hex_length} / 2")
+  file(READ "${file}" head LIMIT ${byte_count} HEX)
+  if(NOT head STREQUAL magic)
+    message(FATAL_ERROR "${file} starts with ${head}, expected ${magic}")
+  endif()
+endfunction()
+
+run_prism(render "${scene}" -o "${WORK_DIR}/out.png" ${size} --quiet)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "render to PNG exited ${rc}:\n${out}${err}")
+endif()
+if(NOT out STREQUAL "")
+  message(FATAL_ERROR "--quiet must print nothing on stdout, got:\n${out}")
+endif()
+expect_magic("${WORK_DIR}/out.png" "89504e470d0a1a0a")
+
+# Without --quiet, one summary line on stdout.
+run_prism(render "${scene}" -o "${WORK_DIR}/depth.exr" ${size} --aov depth)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "render of the depth AOV to EXR exited ${rc}:\n${out}${err}")
+endif()
+if(NOT out MATCHES "prism: rendered 64x36 at [0-9]+ spp on '.+' in .* primary, .* shadow rays, .* Mrays/s -> .*depth\\.exr")
+  message(FATAL_ERROR "unexpected summary line:\n${out}")
+endif()
+expect_magic("${WORK_DIR}/depth.exr" "762f3101")
+
+run_prism(render "${scene}" -o "${WORK_DIR}/depth.png" ${size} --aov depth --quiet)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "the depth AOV to PNG must be refused, but prism exited 0")
+endif()
+string(FIND "${err}" "depth" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "the refusal should explain why (depth needs a float format), got:\n${err}")
+endif()
+if(EXISTS "${WORK_DIR}/depth.png")
+  message(FATAL_ERROR "a refused render wrote ${WORK_DIR}/depth.png")
+endif()
