@@ -1,6 +1,7 @@
 // `prism devices`: what OpenCL sees, in the numbering `--device N` uses.
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "args.h"
 #include "commands.h"

@@ -39,7 +39,8 @@ void ProgressBar::draw(double fraction_done, double elapsed) {
   char remaining[48] = "";
   // A linear estimate; only shown once there is enough done to extrapolate from.
   if (fraction >= 0.02 && fraction < 1.0) {
-    std::snprintf(remaining, sizeof remaining, ", about %.0f s left", elapsed * (1.0 - fraction) / fraction);
+    const double left = elapsed * (1.0 - fraction) / fraction;
+    std::snprintf(remaining, sizeof remaining, left < 10.0 ? ", about %.1f s left" : ", about %.0f s left", left);
   }
   std::fprintf(stderr, "\rprism: rendering [%s] %3d%%  %.1f s%s\033[K", bar.c_str(),
                static_cast<int>(fraction * 100.0), elapsed, remaining);

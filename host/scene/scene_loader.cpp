@@ -22,7 +22,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr int kMaxFilmSize = 32768;
-constexpr int kMaxSpp = 1 << 20;
+constexpr int kMaxSpp = 65536;  // the renderer keeps all samples of a pixel in one 65536-ray slice
 constexpr int kMaxDepth = 31;
 
 std::string join(const std::vector<std::string>& names) {
