@@ -23,10 +23,10 @@ Output formats, chosen by the extension of OUT:
   .pfm  float, linear   .hdr       Radiance RGBE, linear
 
 Environment:
-  XDG_CACHE_HOME    compiled kernels are cached in $XDG_CACHE_HOME/prism
-                    (default ~/.cache/prism); the first render on a device compiles
-                    them, later renders load them. Delete the folder or pass
-                    --no-cache to compile afresh.
+  PRISM_CACHE_DIR   compiled kernels are cached here; default
+                    $XDG_CACHE_HOME/prism/kernels, else ~/.cache/prism/kernels. The
+                    first render on a device compiles them, later renders load
+                    them. Delete the folder or pass --no-cache to compile afresh.
   PRISM_KERNEL_DIR  read the OpenCL kernel sources from this folder instead of the
                     copies built into the library (for kernel development; point it
                     at the kernels/ folder of a source tree).
@@ -80,7 +80,7 @@ Device:
                     part of the device name (case-insensitive). Default: the first
                     GPU, else the first device.
   --no-cache        compile the kernels afresh, without reading or filling the kernel
-                    cache in $XDG_CACHE_HOME/prism (default ~/.cache/prism)
+                    cache (see PRISM_CACHE_DIR in 'prism --help')
 
 Messages:
   --quiet           no progress bar and no summary line (warnings and errors still

@@ -70,7 +70,18 @@ int writeOutput(const RenderRequest& request, PrismContext context, const PrismR
                 const std::vector<float>& rgba) {
   const char* path = request.output_path.c_str();
   if (!request.aov) {
-    if (prismWriteImage(path, rgba.data(), options.width, options.height, 4) != PRISM_OK) return failWithLastError();
+    // The background colour is part of the picture, so 8-bit and RGB-only
+    // formats get opaque RGB; .exr and .tif keep alpha (primary-ray coverage)
+    // for compositing.
+    const std::string ext = lowerExtension(request.output_path);
+    if (ext == ".exr" || ext == ".tif" || ext == ".tiff") {
+      if (prismWriteImage(path, rgba.data(), options.width, options.height, 4) != PRISM_OK) return failWithLastError();
+      return kExitOk;
+    }
+    std::vector<float> rgb(static_cast<size_t>(options.width) * options.height * 3);
+    for (size_t i = 0; i < rgb.size() / 3; ++i)
+      for (int c = 0; c < 3; ++c) rgb[3 * i + c] = rgba[4 * i + c];
+    if (prismWriteImage(path, rgb.data(), options.width, options.height, 3) != PRISM_OK) return failWithLastError();
     return kExitOk;
   }
   uint32_t channels = 0;

@@ -17,6 +17,7 @@ namespace {
 constexpr char kMagic[8] = {'P', 'R', 'S', 'M', 'B', 'I', 'N', '1'};
 
 std::string defaultFolder() {
+  if (const char* own = std::getenv("PRISM_CACHE_DIR"); own && *own) return own;
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::string(xdg) + "/prism/kernels";
   if (const char* home = std::getenv("HOME"); home && *home) return std::string(home) + "/.cache/prism/kernels";
   return "";

@@ -17,7 +17,8 @@ std::uint64_t fnv1a64(const std::string& data, std::uint64_t seed = 146959810393
 
 class ProgramCache {
  public:
-  // `folder` empty: $XDG_CACHE_HOME/prism/kernels, else ~/.cache/prism/kernels.
+  // `folder` empty: $PRISM_CACHE_DIR, else $XDG_CACHE_HOME/prism/kernels, else
+  // ~/.cache/prism/kernels.
   explicit ProgramCache(std::string folder = "");
 
   std::string keyFor(const DeviceDescription& device, const std::string& options, const std::string& source) const;
