@@ -9,6 +9,10 @@ packages=(
   pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
   libcgal-dev libopenmesh-dev libopenimageio-dev openimageio-tools
   catch2 nlohmann-json3-dev
+  libtinyobjloader-dev libgmp-dev libmpfr-dev libboost-dev
+  libembree-dev            # benchmarks only: the reference column of prism-bench
+  clang libclang-rt-14-dev # fuzz targets (libFuzzer with ASan/UBSan)
+  bc
 )
 
 missing=()

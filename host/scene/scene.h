@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/mesh.h"
+#include "scene/scene_material.h"
 #include "scene/transform.h"
 #include "scene/vec3.h"
 
@@ -32,36 +34,13 @@ struct RenderSettings {
   unsigned long long seed = 0;
 };
 
-enum class ShadingModel { Phong = 0, Blinn = 1 };
-
-struct Texture {
-  enum class Kind { None = 0, Checker = 1 };
-  Kind kind = Kind::None;
-  Vec3 color1{1, 1, 1};
-  Vec3 color2{0, 0, 0};
-  double scale = 1;  // size of one checker square in surface units
-};
-
-struct Material {
-  std::string name;
-  ShadingModel model = ShadingModel::Phong;
-  Vec3 ambient{1, 1, 1};  // multiplies render.ambient
-  Vec3 diffuse{0.8, 0.8, 0.8};
-  Vec3 specular{0, 0, 0};
-  double shininess = 32;  // specular exponent
-  double reflect = 0;     // k_refl: weight of the mirror-reflected ray
-  double transmit = 0;    // k_trans: weight of the refracted ray and shadow transmission
-  double ior = 1;         // index of refraction of the object's inside
-  Texture texture;        // multiplies ambient and diffuse
-};
-
 struct Light {
   Vec3 position{0, 10, 0};
   Vec3 color{1, 1, 1};
   double intensity = 1;
 };
 
-enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3 };
+enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4 };
 
 struct Object {
   ObjectType type = ObjectType::Sphere;
@@ -74,6 +53,18 @@ struct Object {
   Vec3 box_min, box_max;
   Vec3 point, normal{0, 1, 0};
   Vec3 vertices[3];
+  // Mesh: its triangles (shared with other objects naming the same file), drawn
+  // through `transform`; `material` is used for triangles whose file gives none,
+  // or for all of them when `material_override` is set. The file's own materials
+  // start at Scene::materials[mesh_material_offset].
+  SharedMesh mesh;
+  bool material_override = false;
+  int mesh_material_offset = 0;
+  bool smooth = false;  // interpolate vertex normals (when the file has them)
+
+  // Primitives this object contributes to the scene's numbering (primid): one
+  // for an analytic object, one per triangle for a mesh.
+  std::size_t primitiveCount() const { return type == ObjectType::Mesh && mesh ? mesh->triangleCount() : 1; }
 };
 
 struct Scene {
