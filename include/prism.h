@@ -112,7 +112,36 @@ PRISM_API void prismReleaseScene(PrismScene scene); /* NULL is a no-op */
 PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* count);
 PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, const char** message);
 
+/* The pinhole camera (DESIGN.md: right-handed; pixel (i, j) with i to the right,
+ * j down from the top row; one sample goes through the pixel centre). */
+typedef struct PrismCamera {
+  size_t struct_size; /* sizeof(PrismCamera); set by prismGetCamera */
+  float position[3];
+  float look_at[3];
+  float up[3];
+  float fov_degrees;  /* vertical field of view, 0 < fov < 180 */
+} PrismCamera;
+
+/* The scene's camera, to read or change (prismSetCamera checks it: position !=
+ * look_at, up not parallel to the view direction, fov in (0, 180)). */
+PRISM_API PrismStatus prismGetCamera(PrismScene scene, PrismCamera* camera);
+PRISM_API PrismStatus prismSetCamera(PrismScene scene, const PrismCamera* camera);
+
 /* ---- rendering ----------------------------------------------------------------- */
+
+/* Spatial index used for ray queries: a BVH (binned SAH, the default), an adaptive
+ * octree, a BSP (SAH kd-) tree, or none (every ray against every primitive). */
+typedef enum PrismAccel {
+  PRISM_ACCEL_BVH = 0,
+  PRISM_ACCEL_OCTREE = 1,
+  PRISM_ACCEL_BSP = 2,
+  PRISM_ACCEL_NONE = 3
+} PrismAccel;
+
+/* Parses "bvh", "octree", "bsp" or "none". */
+PRISM_API PrismStatus prismParseAccel(const char* name, PrismAccel* accel);
+/* The lower-case name of a structure ("bvh"), or NULL for an unknown value. */
+PRISM_API const char* prismAccelName(PrismAccel accel);
 
 typedef struct PrismRenderOptions {
   size_t struct_size;  /* sizeof(PrismRenderOptions); set by prismGetRenderOptions */
@@ -122,6 +151,7 @@ typedef struct PrismRenderOptions {
   uint32_t max_depth;  /* levels of reflected/refracted rays after the primary ray */
   float min_weight;    /* adaptive depth control: a ray whose weight falls under this is not traced */
   uint64_t seed;       /* seeds the sample positions when spp > 1 */
+  uint32_t accel;      /* a PrismAccel */
 } PrismRenderOptions;
 
 /* Fills `options` with the scene's own settings (film and render blocks). */

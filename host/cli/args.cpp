@@ -95,6 +95,36 @@ std::optional<float> ParsedArgs::nonNegativeFloat(const std::string& name) const
   return number;
 }
 
+std::optional<std::array<float, 3>> ParsedArgs::triple(const std::string& name) const {
+  const auto value = text(name);
+  if (!value) return std::nullopt;
+  std::array<float, 3> out{};
+  const char* p = value->c_str();
+  for (int k = 0; k < 3; ++k) {
+    errno = 0;
+    char* end = nullptr;
+    out[k] = std::strtof(p, &end);
+    const char expected_end = k < 2 ? ',' : '\0';
+    if (end == p || *end != expected_end || errno == ERANGE || !std::isfinite(out[k]))
+      throw UsageError(name + ": expected three numbers X,Y,Z, got '" + *value + "'");
+    p = end + 1;
+  }
+  return out;
+}
+
+std::optional<float> ParsedArgs::floatBetween(const std::string& name, float low, float high) const {
+  const auto value = text(name);
+  if (!value) return std::nullopt;
+  errno = 0;
+  char* end = nullptr;
+  const float number = std::strtof(value->c_str(), &end);
+  if (value->empty() || *end != '\0' || errno == ERANGE || !(number > low && number < high)) {
+    throw UsageError(name + ": expected a number between " + std::to_string(static_cast<int>(low)) + " and " +
+                     std::to_string(static_cast<int>(high)) + ", got '" + *value + "'");
+  }
+  return number;
+}
+
 ParsedArgs parseArgs(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs,
                      const std::string& command) {
   ParsedArgs parsed;

@@ -3,6 +3,7 @@
 // becomes a UsageError whose message names the option at fault.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -33,6 +34,10 @@ class ParsedArgs {
   std::optional<uint32_t> uint32(const std::string& name, uint32_t min) const;
   std::optional<uint64_t> uint64(const std::string& name) const;
   std::optional<float> nonNegativeFloat(const std::string& name) const;
+  // Three comma-separated finite numbers, "X,Y,Z".
+  std::optional<std::array<float, 3>> triple(const std::string& name) const;
+  // A finite number strictly between `low` and `high`.
+  std::optional<float> floatBetween(const std::string& name, float low, float high) const;
   const std::vector<std::string>& positionals() const { return m_positionals; }
 
  private:

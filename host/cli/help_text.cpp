@@ -75,6 +75,16 @@ Image and sampling (default: the scene's value):
   --seed S          seed of the sample positions when N > 1 (0 to 2^64-1). The same
                     scene, seed and device give the same image, bit for bit.
 
+Camera (default: the scene's camera):
+  --camera-pos X,Y,Z   where the camera stands
+  --camera-look X,Y,Z  the point it looks at
+  --camera-up X,Y,Z    its up direction (not parallel to the view direction)
+  --fov DEG            vertical field of view in degrees, 0 < DEG < 180
+
+Speed:
+  --accel A         spatial index for ray queries: bvh (default), octree, bsp, or
+                    none (every ray against every primitive)
+
 Device:
   --device D        the OpenCL device: an index from 'prism devices', 'cpu', 'gpu', or
                     part of the device name (case-insensitive). Default: the first
@@ -100,6 +110,7 @@ Examples:
   prism render scenes/whitted.json -o preview.png --width 320 --height 180 --spp 1
   prism render scenes/whitted.json -o final.exr --spp 64 --max-depth 8 --seed 7
   prism render scenes/whitted.json -o normals.png --aov normal
+  prism render scenes/whitted.json -o high.png --camera-pos 0,6,9 --fov 35
   prism render scenes/whitted.json -o out.png --device 1 --no-cache
 
 Exit codes: 0 success; 1 failure (scene, device or file); 2 bad command line;

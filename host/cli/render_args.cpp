@@ -13,6 +13,8 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--spp", "", true},       {"--max-depth", "", true}, {"--min-weight", "", true},
     {"--device", "", true},    {"--aov", "", true},       {"--seed", "", true},
     {"--no-cache", "", false}, {"--quiet", "", false},    {"--help", "-h", false},
+    {"--accel", "", true},     {"--camera-pos", "", true}, {"--camera-look", "", true},
+    {"--camera-up", "", true}, {"--fov", "", true},
 };
 
 // The same list as the library's image writer, checked here so that a typo in -o
@@ -83,6 +85,16 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
     }
     request.aov = aov;
   }
+  if (const auto accel_name = parsed.text("--accel")) {
+    PrismAccel accel;
+    if (prismParseAccel(accel_name->c_str(), &accel) != PRISM_OK)
+      throw UsageError("--accel: unknown structure '" + *accel_name + "' (expected bvh, octree, bsp or none)");
+    request.accel = accel;
+  }
+  request.camera_pos = parsed.triple("--camera-pos");
+  request.camera_look = parsed.triple("--camera-look");
+  request.camera_up = parsed.triple("--camera-up");
+  request.fov = parsed.floatBetween("--fov", 0, 180);
   checkOutput(request);
   return request;
 }

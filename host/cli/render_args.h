@@ -2,6 +2,7 @@
 // number or output format fails in milliseconds, not after a long render.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -21,6 +22,9 @@ struct RenderRequest {
   std::optional<uint64_t> seed;
   std::string device;  // "" for the library's default
   std::optional<PrismAov> aov;
+  std::optional<PrismAccel> accel;
+  std::optional<std::array<float, 3>> camera_pos, camera_look, camera_up;
+  std::optional<float> fov;
   bool use_kernel_cache = true;
   bool quiet = false;
 };

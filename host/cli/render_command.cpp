@@ -42,6 +42,24 @@ void applyOverrides(const RenderRequest& request, PrismRenderOptions& options) {
   if (request.max_depth) options.max_depth = *request.max_depth;
   if (request.min_weight) options.min_weight = *request.min_weight;
   if (request.seed) options.seed = *request.seed;
+  if (request.accel) options.accel = *request.accel;
+}
+
+// --camera-pos/--camera-look/--camera-up/--fov replace the scene's values; the
+// library checks that the result can form an image.
+bool applyCameraOverrides(const RenderRequest& request, PrismScene scene) {
+  if (!request.camera_pos && !request.camera_look && !request.camera_up && !request.fov) return true;
+  PrismCamera camera{};
+  camera.struct_size = sizeof camera;
+  if (prismGetCamera(scene, &camera) != PRISM_OK) return false;
+  auto copy = [](float* dst, const std::optional<std::array<float, 3>>& v) {
+    if (v) std::copy(v->begin(), v->end(), dst);
+  };
+  copy(camera.position, request.camera_pos);
+  copy(camera.look_at, request.camera_look);
+  copy(camera.up, request.camera_up);
+  if (request.fov) camera.fov_degrees = *request.fov;
+  return prismSetCamera(scene, &camera) == PRISM_OK;
 }
 
 // Checked before rendering, so a typo in the folder does not cost a render.
@@ -137,6 +155,7 @@ int runRender(const std::vector<std::string>& args) {
   options.struct_size = sizeof options;
   if (prismGetRenderOptions(scene.get(), &options) != PRISM_OK) return failWithLastError();
   applyOverrides(request, options);
+  if (!applyCameraOverrides(request, scene.get())) return failWithLastError();
 
   PrismContextOptions context_options{};
   prismDefaultContextOptions(&context_options);

@@ -36,12 +36,56 @@ ObjectGpu flattenObject(const Object& ob) {
     case ObjectType::Triangle:
       for (int i = 0; i < 3; ++i) put3(g.p + 3 * i, ob.vertices[i]);
       break;
+    case ObjectType::Mesh:
+      break;  // flattened triangle by triangle in appendMesh
   }
   g.has_transform = ob.transform.isIdentity() ? 0 : 1;
   Transform inv = g.has_transform ? ob.transform.inverse() : Transform::identity();
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c) g.world_to_object[4 * r + c] = static_cast<float>(inv.m[r][c]);
   return g;
+}
+
+Vec3 vertexAt(const std::vector<float>& xyz, std::uint32_t i) { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
+
+// One TRIANGLE record per mesh triangle, in file order, already in world space.
+void appendMesh(const Object& ob, std::vector<ObjectGpu>& out) {
+  const TriangleMesh& mesh = *ob.mesh;
+  const bool identity = ob.transform.isIdentity();
+  std::vector<Vec3> world(mesh.vertexCount());
+  for (std::size_t v = 0; v < world.size(); ++v) {
+    Vec3 p = vertexAt(mesh.positions, static_cast<std::uint32_t>(v));
+    world[v] = identity ? p : ob.transform.applyPoint(p);
+  }
+  const bool smooth = ob.smooth && mesh.normals.size() == mesh.positions.size();
+  std::vector<Vec3> world_normals;
+  if (smooth) {
+    // Normals map by the inverse transpose of the object-to-world transform.
+    Transform inv = identity ? Transform::identity() : ob.transform.inverse();
+    world_normals.resize(world.size());
+    for (std::size_t v = 0; v < world.size(); ++v) {
+      Vec3 n = vertexAt(mesh.normals, static_cast<std::uint32_t>(v));
+      Vec3 w{inv.m[0][0] * n.x + inv.m[1][0] * n.y + inv.m[2][0] * n.z,
+             inv.m[0][1] * n.x + inv.m[1][1] * n.y + inv.m[2][1] * n.z,
+             inv.m[0][2] * n.x + inv.m[1][2] * n.y + inv.m[2][2] * n.z};
+      double len = length(w);
+      world_normals[v] = len > 0 ? w / len : w;
+    }
+  }
+  out.reserve(out.size() + mesh.triangleCount());
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    ObjectGpu g{};
+    g.type = OBJECT_TRIANGLE;
+    int file_material = mesh.triangle_materials.empty() ? -1 : mesh.triangle_materials[t];
+    g.material = ob.material_override || file_material < 0 ? ob.material : ob.mesh_material_offset + file_material;
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t v = mesh.indices[3 * t + k];
+      put3(g.p + 3 * k, world[v]);
+      if (smooth) put3(g.world_to_object + 3 * k, world_normals[v]);
+    }
+    g.flags = smooth ? OBJECT_FLAG_VERTEX_NORMALS : 0;
+    out.push_back(g);
+  }
 }
 
 MaterialGpu flattenMaterial(const Material& m) {
@@ -79,7 +123,12 @@ CameraBasis cameraBasis(const Camera& camera, int width, int height) {
 
 GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   GpuScene g;
-  for (const Object& ob : scene.objects) g.objects.push_back(flattenObject(ob));
+  for (const Object& ob : scene.objects) {
+    if (ob.type == ObjectType::Mesh)
+      appendMesh(ob, g.objects);
+    else
+      g.objects.push_back(flattenObject(ob));
+  }
   for (const Material& m : scene.materials) g.materials.push_back(flattenMaterial(m));
   for (const Light& l : scene.lights) {
     LightGpu lg{};

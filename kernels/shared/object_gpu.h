@@ -7,16 +7,21 @@
 #define OBJECT_PLANE 2
 #define OBJECT_TRIANGLE 3
 
+/* A triangle whose world_to_object array holds unit vertex normals n0, n1, n2
+ * (9 floats) to interpolate, instead of a matrix (triangles are stored in world
+ * space and need none). */
+#define OBJECT_FLAG_VERTEX_NORMALS 1
+
 typedef struct ObjectGpu {
   int type;     /* OBJECT_* */
   int material; /* index into the material array */
   int has_transform; /* nonzero: intersect in object space through `world_to_object` */
-  int pad;      /* aligns the float arrays to 16 bytes */
+  int flags;    /* OBJECT_FLAG_*; also aligns the float arrays to 16 bytes */
   /* sphere: center xyz, radius; box: min xyz, max xyz; plane: point xyz, normal xyz;
    * triangle: v0 xyz, v1 xyz, v2 xyz (world space). */
   float p[12];
   /* Rows of the 3x4 world-to-object affine matrix. Object-space normals map back
-   * with its transposed linear part. */
+   * with its transposed linear part. Smooth triangles: see OBJECT_FLAG_VERTEX_NORMALS. */
   float world_to_object[12];
 } ObjectGpu;
 

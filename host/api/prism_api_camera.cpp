@@ -1,0 +1,73 @@
+// C API: the scene's camera and the choice of acceleration structure.
+#include <cstring>
+
+#include "api/api_boundary.h"
+#include "api/api_handles.h"
+#include "scene/camera_check.h"
+
+using namespace prism;
+
+namespace {
+
+struct AccelName {
+  const char* name;
+  PrismAccel accel;
+};
+const AccelName kAccelNames[] = {
+    {"bvh", PRISM_ACCEL_BVH}, {"octree", PRISM_ACCEL_OCTREE}, {"bsp", PRISM_ACCEL_BSP}, {"none", PRISM_ACCEL_NONE}};
+
+Vec3 vec(const float* v) { return {v[0], v[1], v[2]}; }
+void put(float* dst, const Vec3& v) {
+  dst[0] = static_cast<float>(v.x);
+  dst[1] = static_cast<float>(v.y);
+  dst[2] = static_cast<float>(v.z);
+}
+
+}  // namespace
+
+extern "C" {
+
+PRISM_API PrismStatus prismGetCamera(PrismScene scene, PrismCamera* camera) {
+  if (!scene || !camera) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetCamera: NULL argument");
+  const Camera& c = scene->scene.camera;
+  camera->struct_size = sizeof(PrismCamera);
+  put(camera->position, c.position);
+  put(camera->look_at, c.look_at);
+  put(camera->up, c.up);
+  camera->fov_degrees = static_cast<float>(c.fov);
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismSetCamera(PrismScene scene, const PrismCamera* camera) {
+  if (!scene || !camera) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismSetCamera: NULL argument");
+  if (camera->struct_size < sizeof(PrismCamera))
+    return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismSetCamera: struct_size is too small (fill it with prismGetCamera)");
+  Camera c;
+  c.position = vec(camera->position);
+  c.look_at = vec(camera->look_at);
+  c.up = vec(camera->up);
+  c.fov = camera->fov_degrees;
+  std::string problem = cameraProblem(c);
+  if (!problem.empty()) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismSetCamera: " + problem);
+  scene->scene.camera = c;
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismParseAccel(const char* name, PrismAccel* accel) {
+  if (!name || !accel) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismParseAccel: NULL argument");
+  for (const AccelName& entry : kAccelNames)
+    if (std::strcmp(name, entry.name) == 0) {
+      *accel = entry.accel;
+      return PRISM_OK;
+    }
+  return fail(PRISM_ERROR_INVALID_ARGUMENT,
+              std::string("unknown acceleration structure '") + name + "' (expected bvh, octree, bsp or none)");
+}
+
+PRISM_API const char* prismAccelName(PrismAccel accel) {
+  for (const AccelName& entry : kAccelNames)
+    if (entry.accel == accel) return entry.name;
+  return nullptr;
+}
+
+}  // extern "C"
