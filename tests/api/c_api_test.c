@@ -10,6 +10,14 @@
 
 static int failures = 0;
 
+/* Cancels the render the first time it is called. */
+static int cancel_at_once(void* user, double fraction_done) {
+  int* calls = (int*)user;
+  (void)fraction_done;
+  ++*calls;
+  return 1;
+}
+
 #define CHECK(cond)                                                    \
   do {                                                                 \
     if (!(cond)) {                                                     \
@@ -99,6 +107,37 @@ int main(int argc, char** argv) {
     }
   }
   CHECK(hits > 0 && hits < pixels); /* the default scene shows sky and objects */
+
+  /* The camera: read, refused when degenerate, changed when valid. */
+  {
+    PrismCamera cam, bad;
+    PrismAccel accel;
+    CHECK_OK(prismGetCamera(scene, &cam));
+    CHECK(cam.fov_degrees > 0 && cam.fov_degrees < 180);
+    bad = cam;
+    bad.look_at[0] = bad.position[0];
+    bad.look_at[1] = bad.position[1];
+    bad.look_at[2] = bad.position[2];
+    CHECK(prismSetCamera(scene, &bad) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "look_at") != NULL);
+    cam.fov_degrees = 20.0f;
+    CHECK_OK(prismSetCamera(scene, &cam));
+    CHECK_OK(prismGetCamera(scene, &bad));
+    CHECK(bad.fov_degrees == 20.0f);
+    CHECK_OK(prismParseAccel("octree", &accel));
+    CHECK(accel == PRISM_ACCEL_OCTREE && strcmp(prismAccelName(accel), "octree") == 0);
+    CHECK(prismParseAccel("kdtree", &accel) == PRISM_ERROR_INVALID_ARGUMENT);
+  }
+
+  /* A progress callback that returns nonzero cancels the render. */
+  {
+    int calls = 0;
+    CHECK_OK(prismSetProgressCallback(ctx, cancel_at_once, &calls));
+    CHECK(prismRender(ctx, scene, &opts, rgba, NULL) == PRISM_ERROR_INVALID_OPERATION);
+    CHECK(calls == 1);
+    CHECK(strstr(prismGetLastError(), "cancel") != NULL);
+    CHECK_OK(prismSetProgressCallback(ctx, NULL, NULL));
+  }
 
   free(rgba);
   free(depth);
