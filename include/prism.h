@@ -127,6 +127,70 @@ typedef struct PrismCamera {
 PRISM_API PrismStatus prismGetCamera(PrismScene scene, PrismCamera* camera);
 PRISM_API PrismStatus prismSetCamera(PrismScene scene, const PrismCamera* camera);
 
+/* ---- meshes -------------------------------------------------------------------- */
+
+/* Mesh files are read by format plugins (include/prism_plugin.h, docs/plugins.md):
+ * OBJ with MTL, PLY and OFF ship with prism. */
+
+/* An empty scene (default camera and material, no lights or objects) to build
+ * through the calls below. */
+PRISM_API PrismStatus prismNewScene(PrismScene* out_scene);
+/* A scene showing one mesh file: a camera framing its bounding box, a headlight,
+ * a default material (docs/cli.md, "Rendering a mesh file"). Fails for a file with
+ * no triangles. */
+PRISM_API PrismStatus prismLoadMeshAsScene(const char* path, PrismScene* out_scene);
+/* Adds a point light. */
+PRISM_API PrismStatus prismAddPointLight(PrismScene scene, const float position[3], const float color[3],
+                                         float intensity);
+/* Adds a mesh object from a file. `material` names a material of the scene (NULL:
+ * the file's own materials); `object_to_world` is a 4x4 row-major affine matrix
+ * (NULL: identity); `smooth` nonzero interpolates the file's vertex normals.
+ * Several objects naming one file share its data. `out_object` (may be NULL)
+ * receives the object's index. */
+PRISM_API PrismStatus prismAddMeshFile(PrismScene scene, const char* path, const char* material,
+                                       const float* object_to_world, int smooth, uint32_t* out_object);
+/* Adds a mesh from caller-owned arrays, which are copied: `positions` holds
+ * vertex_count xyz triples, `indices` 3 per triangle. Same checks as a file. */
+PRISM_API PrismStatus prismAddMeshArrays(PrismScene scene, const float* positions, size_t vertex_count,
+                                         const uint32_t* indices, size_t triangle_count, const char* material,
+                                         const float* object_to_world, uint32_t* out_object);
+
+/* What a mesh file holds, for `prism info`: read with the plugins, not rendered. */
+typedef struct PrismMeshReportImpl* PrismMeshReport;
+typedef struct PrismMeshCounts {
+  size_t struct_size;         /* sizeof(PrismMeshCounts); set by the caller */
+  uint64_t vertices;
+  uint64_t faces;             /* as written in the file */
+  uint64_t triangles;         /* after triangulating polygons and expanding strips */
+  uint64_t degenerate_triangles;
+  uint32_t materials;
+  uint32_t has_normals, has_texcoords, has_colors;
+  float bounds_min[3], bounds_max[3]; /* both 0 for a mesh without vertices */
+} PrismMeshCounts;
+PRISM_API PrismStatus prismInspectMeshFile(const char* path, PrismMeshReport* out_report);
+PRISM_API PrismStatus prismGetMeshCounts(PrismMeshReport report, PrismMeshCounts* counts);
+/* The name of the plugin that read the file. */
+PRISM_API const char* prismGetMeshPlugin(PrismMeshReport report);
+/* Material `index` (< counts.materials): its name. */
+PRISM_API const char* prismGetMeshMaterialName(PrismMeshReport report, uint32_t index);
+PRISM_API uint32_t prismGetMeshWarningCount(PrismMeshReport report);
+PRISM_API const char* prismGetMeshWarning(PrismMeshReport report, uint32_t index);
+PRISM_API void prismReleaseMeshReport(PrismMeshReport report); /* NULL is a no-op */
+
+/* Plugins found at start-up (PRISM_PLUGIN_PATH, then plugins/ next to libprism),
+ * accepted or not, for `prism plugins`. */
+typedef struct PrismPluginCandidateInfo {
+  size_t struct_size;    /* sizeof(PrismPluginCandidateInfo); set by the caller */
+  const char* path;
+  const char* name;      /* "" when the library could not be read */
+  const char* extensions; /* space-separated, e.g. "ply" */
+  int accepted;
+  const char* reason;    /* why it was refused; "" when accepted */
+} PrismPluginCandidateInfo;
+PRISM_API PrismStatus prismGetPluginCount(uint32_t* count);
+/* Strings stay valid for the life of the process. */
+PRISM_API PrismStatus prismGetPluginInfo(uint32_t index, PrismPluginCandidateInfo* info);
+
 /* ---- rendering ----------------------------------------------------------------- */
 
 /* Spatial index used for ray queries: a BVH (binned SAH, the default), an adaptive

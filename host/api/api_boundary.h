@@ -16,7 +16,7 @@ PrismStatus fail(PrismStatus status, const std::string& message);
 
 // Runs `body` (returning PrismStatus) and maps exceptions:
 //   SceneIoError → IO, SceneError → PARSE, KernelBuildError → KERNEL_BUILD,
-//   DeviceError → DEVICE, ImageError → IO, std::invalid_argument → INVALID_ARGUMENT,
+//   DeviceError → DEVICE, MeshError → PARSE, ImageError → IO, std::invalid_argument → INVALID_ARGUMENT,
 //   std::bad_alloc → OUT_OF_MEMORY, anything else → UNKNOWN.
 template <typename Body>
 PrismStatus guarded(Body&& body);

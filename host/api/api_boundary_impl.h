@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "device/cl_error.h"
+#include "mesh/mesh_error.h"
 #include "render/image_writer.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -23,6 +24,8 @@ PrismStatus guarded(Body&& body) {
     return fail(PRISM_ERROR_KERNEL_BUILD, e.what());
   } catch (const DeviceError& e) {
     return fail(PRISM_ERROR_DEVICE, e.what());
+  } catch (const MeshError& e) {
+    return fail(PRISM_ERROR_PARSE, e.what());
   } catch (const ImageError& e) {
     return fail(PRISM_ERROR_IO, e.what());
   } catch (const RenderCancelled& e) {

@@ -15,6 +15,8 @@ constexpr int kExitInterrupted = 130;  // Ctrl-C, as shells report SIGINT
 
 int runDevices(const std::vector<std::string>& args);
 int runRender(const std::vector<std::string>& args);
+int runInfo(const std::vector<std::string>& args);
+int runPlugins(const std::vector<std::string>& args);
 
 // "prism: error: <message>" on stderr.
 void printError(const std::string& message);

@@ -7,6 +7,10 @@ const char* const kMainHelp =
 
 Usage:
   prism render SCENE.json -o OUT [options]   render a scene to an image file
+  prism render MESH.ply -o OUT [options]     render a mesh file (.obj .ply .off ...)
+                                             with a camera that frames it
+  prism info [--json] MESH                   what a mesh file holds
+  prism plugins                              the mesh-format plugins found
   prism devices                              list the OpenCL devices prism can use
   prism COMMAND --help                       options of one command
   prism --help                               this help
@@ -39,18 +43,28 @@ Documentation: docs/cli.md (this tool), docs/scene-format.md (scene files).
 
 const char* const kRenderHelp =
     R"(Usage: prism render SCENE.json -o OUT [options]
+       prism render MESH -o OUT [options]
 
 Renders the scene file SCENE.json (format: docs/scene-format.md) and writes the image
 to OUT. Options override the scene's own film and render settings; whatever is not
 given keeps the scene's value.
 
+Given a mesh file instead (.obj, .ply, .off, or any extension a plugin reads; see
+'prism plugins'), prism renders it alone at 800x600: the camera looks at the centre of
+its bounding box from the +Z side, a little above and to the right, far enough that
+the bounding sphere fills 90% of a 40-degree vertical field of view; a white headlight
+sits at the camera; the mesh keeps its file's materials (MTL) or gets a light grey
+Phong material; vertex normals are interpolated when the file has them. The camera
+options below move that camera.
+
 Output:
   -o, --output OUT  the image to write (required). Its extension picks the format:
-                      .png        8-bit, sRGB-encoded colour, linear alpha
+                      .png        8-bit, sRGB-encoded colour, RGB
                       .exr, .tif  32-bit float, linear, RGBA
-                      .pfm        32-bit float, linear, RGB (alpha dropped)
-                      .hdr        Radiance RGBE, linear, RGB (alpha dropped)
-                    Alpha is 1 where the primary ray hit something, 0 where it missed.
+                      .pfm        32-bit float, linear, RGB
+                      .hdr        Radiance RGBE, linear, RGB
+                    In .exr and .tif, alpha is the fraction of a pixel's primary rays
+                    that hit something; the RGB formats show the background colour.
                     The file appears only when complete; a failed render or write
                     leaves no file.
   --aov NAME        write an auxiliary image instead of the colour image:
@@ -131,6 +145,32 @@ GPUs need their vendor's OpenCL driver. 'clinfo' shows what the OpenCL loader se
 
 Exit codes: 0 when at least one device is found; 1 when there is none.
 More: docs/cli.md.
+)";
+
+const char* const kInfoHelp =
+    R"(Usage: prism info [--json] FILE
+
+Reads a mesh file with the format plugins (see 'prism plugins') and prints what it
+holds: vertex, face and triangle counts (after triangulating polygons and expanding
+triangle strips; zero-area triangles are counted apart), the attributes present,
+the bounding box, the materials, the plugin that read it, and any warnings. A point
+cloud (no faces) is reported with 0 triangles.
+
+  --json      print the same as a JSON object
+  -h, --help  this help
+
+Exit codes: 0 success; 1 the file could not be read (the message names it and why);
+2 bad command line.
+)";
+
+const char* const kPluginsHelp =
+    R"(Usage: prism plugins
+
+Lists the mesh-format plugins prism found, what extensions each reads, and every
+shared library it looked at but refused, with the reason (not loadable, missing
+entry symbol, wrong ABI version). Search order: the folders in $PRISM_PLUGIN_PATH
+(colon-separated), then plugins/ next to libprism. The plugin ABI is documented in
+docs/plugins.md.
 )";
 
 }  // namespace prism_cli

@@ -7,5 +7,7 @@ namespace prism_cli {
 extern const char* const kMainHelp;
 extern const char* const kRenderHelp;
 extern const char* const kDevicesHelp;
+extern const char* const kInfoHelp;
+extern const char* const kPluginsHelp;
 
 }  // namespace prism_cli

@@ -147,7 +147,11 @@ int runRender(const std::vector<std::string>& args) {
   }
 
   PrismScene raw_scene = nullptr;
-  if (prismLoadScene(request.scene_path.c_str(), &raw_scene) != PRISM_OK) return failWithLastError();
+  // A .json file is a scene; anything else is a mesh file shown on its own.
+  const bool is_scene = lowerExtension(request.scene_path) == ".json";
+  const PrismStatus loaded = is_scene ? prismLoadScene(request.scene_path.c_str(), &raw_scene)
+                                      : prismLoadMeshAsScene(request.scene_path.c_str(), &raw_scene);
+  if (loaded != PRISM_OK) return failWithLastError();
   const SceneHandle scene(raw_scene);
   printSceneWarnings(scene.get());
 

@@ -8,8 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
+
+#include "mesh/mesh_cache.h"
+#include "mesh/mesh_error.h"
+#include "scene/mesh_objects.h"
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,7 +97,8 @@ std::string element(const std::string& path, std::size_t i) { return path + "[" 
 
 class SceneParser {
  public:
-  SceneParser(std::string name, Scene& scene) : m_name(std::move(name)), m_scene(scene) {}
+  SceneParser(std::string name, std::string base_dir, Scene& scene)
+      : m_name(std::move(name)), m_base_dir(std::move(base_dir)), m_scene(scene) {}
 
   void parse(const Json& root) {
     if (!root.is_object()) fail("", "expected a JSON object at top level, got " + describe(root));
@@ -321,14 +327,20 @@ class SceneParser {
 
   void parseObjects(const Json& v, const std::string& path) {
     if (!v.is_array()) expected(path, "an array of objects", v);
-    for (std::size_t i = 0; i < v.size(); ++i) m_scene.objects.push_back(parseObject(v[i], element(path, i)));
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      Object o = parseObject(v[i], element(path, i));
+      if (o.type == ObjectType::Mesh)
+        addMeshObject(m_scene, o.mesh, o.material_override ? o.material : -1, o.transform, o.smooth);
+      else
+        m_scene.objects.push_back(std::move(o));
+    }
   }
 
   Object parseObject(const Json& v, const std::string& path) {
     if (!v.is_object()) expected(path, "an object", v);
     const std::string typePath = member(path, "type");
     const std::string type =
-        string(require(v, path, "type"), typePath, "a string (sphere, box, plane, triangle)");
+        string(require(v, path, "type"), typePath, "a string (sphere, box, plane, triangle, mesh)");
     Object o;
     if (type == "sphere") {
       checkObject(v, path, {"type", "material", "transform", "center", "radius"});
@@ -353,13 +365,43 @@ class SceneParser {
       checkObject(v, path, {"type", "material", "transform", "vertices"});
       o.type = ObjectType::Triangle;
       parseVertices(require(v, path, "vertices"), member(path, "vertices"), o.vertices);
+    } else if (type == "mesh") {
+      checkObject(v, path, {"type", "material", "transform", "file", "smooth"});
+      o.type = ObjectType::Mesh;
+      parseMesh(v, path, o);
     } else {
-      fail(typePath, "unknown object type '" + type + "' (expected sphere, box, plane, triangle)");
+      fail(typePath, "unknown object type '" + type + "' (expected sphere, box, plane, triangle, mesh)");
     }
-    if (const Json* p = find(v, "material")) o.material = materialIndex(*p, member(path, "material"));
+    if (const Json* p = find(v, "material")) {
+      o.material = materialIndex(*p, member(path, "material"));
+      o.material_override = true;
+    }
     if (const Json* p = find(v, "transform")) o.transform = parseTransform(*p, member(path, "transform"));
     bakeTransform(o);
     return o;
+  }
+
+  // A mesh file, relative to the scene file, read once however many objects
+  // name it (MeshCache). Only the mesh and `smooth` are read here; the object is
+  // completed by addMeshObject in parseObjects.
+  void parseMesh(const Json& v, const std::string& path, Object& o) {
+    const std::string filePath = member(path, "file");
+    std::string file = string(require(v, path, "file"), filePath, "a mesh file name (.obj, .ply, .off, ...)");
+    std::filesystem::path resolved(file);
+    if (resolved.is_relative() && !m_base_dir.empty()) resolved = std::filesystem::path(m_base_dir) / resolved;
+    try {
+      o.mesh = MeshCache::global().load(resolved.string());
+    } catch (const MeshError& e) {
+      fail(filePath, e.what());
+    }
+    if (o.mesh->triangleCount() == 0)
+      fail(filePath, "'" + resolved.string() + "' holds " + std::to_string(o.mesh->vertexCount()) +
+                         " vertices and no faces (a point cloud?): nothing to render");
+    for (const std::string& w : o.mesh->warnings) m_scene.warnings.push_back(resolved.string() + ": " + w);
+    if (const Json* p = find(v, "smooth")) {
+      if (!p->is_boolean()) expected(member(path, "smooth"), "true or false", *p);
+      o.smooth = p->get<bool>();
+    }
   }
 
   void parseVertices(const Json& v, const std::string& path, Vec3 out[3]) const {
@@ -473,6 +515,7 @@ class SceneParser {
   }
 
   std::string m_name;
+  std::string m_base_dir;  // mesh files are relative to the scene file's folder
   Scene& m_scene;
 };
 
@@ -525,7 +568,7 @@ Scene parseScene(const std::string& json_text, const std::string& name) {
   scene.source = name;
   scene.materials.push_back(defaultMaterial());
   try {
-    SceneParser(name, scene).parse(root);
+    SceneParser(name, std::filesystem::path(name).parent_path().string(), scene).parse(root);
   } catch (const Json::exception& e) {
     // The parser checks types before every access; this is a last line of defence.
     throw SceneError(name + ": unexpected value: " + jsonReason(e.what()));

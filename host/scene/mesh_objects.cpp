@@ -1,0 +1,71 @@
+#include "scene/mesh_objects.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace prism {
+
+Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth) {
+  Object o;
+  o.type = ObjectType::Mesh;
+  o.mesh = mesh;
+  o.transform = transform;
+  o.smooth = smooth;
+  o.material_override = material >= 0;
+  o.material = material >= 0 ? material : 0;
+  o.mesh_material_offset = -1;
+  for (const Object& other : scene.objects)
+    if (other.type == ObjectType::Mesh && other.mesh == mesh) o.mesh_material_offset = other.mesh_material_offset;
+  if (o.mesh_material_offset < 0) {
+    o.mesh_material_offset = static_cast<int>(scene.materials.size());
+    scene.materials.insert(scene.materials.end(), mesh->materials.begin(), mesh->materials.end());
+  }
+  scene.objects.push_back(std::move(o));
+  return scene.objects.back();
+}
+
+Scene sceneForMesh(const SharedMesh& mesh) {
+  if (mesh->triangleCount() == 0)
+    throw std::invalid_argument(mesh->source + ": holds " + std::to_string(mesh->vertexCount()) +
+                                " vertices and no faces (a point cloud?): nothing to render");
+  Vec3 lo = Vec3::splat(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (std::size_t i = 0; i < mesh->indices.size(); ++i) {
+    const float* p = &mesh->positions[3 * mesh->indices[i]];
+    lo = {std::min(lo.x, double(p[0])), std::min(lo.y, double(p[1])), std::min(lo.z, double(p[2]))};
+    hi = {std::max(hi.x, double(p[0])), std::max(hi.y, double(p[1])), std::max(hi.z, double(p[2]))};
+  }
+  const Vec3 centre = (lo + hi) * 0.5;
+  const double radius = std::max(length(hi - lo) * 0.5, 1e-6);
+
+  Scene scene;
+  scene.source = mesh->source;
+  Material grey = defaultMaterial();
+  grey.name = "default";
+  grey.diffuse = {0.75, 0.75, 0.75};
+  grey.specular = {0.25, 0.25, 0.25};
+  grey.shininess = 40;
+  scene.materials.push_back(grey);
+
+  scene.camera.fov = 40;
+  const double pi = 3.14159265358979323846;
+  const double distance = radius / std::sin(scene.camera.fov * pi / 360.0) / 0.9;
+  scene.camera.look_at = centre;
+  scene.camera.position = centre + normalize(Vec3{0.35, 0.4, 1.0}) * distance;
+  scene.camera.up = {0, 1, 0};
+  scene.film = {800, 600, 1};
+  scene.render.ambient = {0.15, 0.15, 0.15};
+  scene.render.background = {0.12, 0.13, 0.16};
+  scene.render.max_depth = 4;
+
+  Light headlight;
+  headlight.position = scene.camera.position;
+  scene.lights.push_back(headlight);
+
+  addMeshObject(scene, mesh, -1, Transform::identity(), !mesh->normals.empty());
+  scene.warnings = mesh->warnings;
+  return scene;
+}
+
+}  // namespace prism

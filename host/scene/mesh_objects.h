@@ -1,0 +1,22 @@
+// Adding meshes to a scene: as objects of a scene file or the C API, and as a
+// whole "quick-render" scene around one mesh file.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace prism {
+
+// Appends a mesh object. Its file's materials join scene.materials once per
+// mesh, however many objects share it. `material` < 0 keeps the file's materials
+// (and the default material where the file gives none); otherwise it overrides them.
+Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth);
+
+// A scene that shows one mesh: a camera on the +Z side, a little above and to the
+// right of the bounding box's centre, looking at it, far enough for the bounding
+// sphere to fill 90% of a 40-degree vertical field of view; a white headlight at
+// the camera; a light grey Phong material unless the file brings its own; vertex
+// normals interpolated when the file has them. Throws std::invalid_argument for a
+// mesh without triangles.
+Scene sceneForMesh(const SharedMesh& mesh);
+
+}  // namespace prism
