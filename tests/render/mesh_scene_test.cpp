@@ -1,0 +1,202 @@
+// Meshes inside scenes: the same mesh through every format renders the same
+// primid and depth AOVs; objects naming one file share it; smooth normals;
+// the quick-render camera frames the mesh.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "mesh/mesh_cache.h"
+#include "render/gpu_scene.h"
+#include "render/renderer.h"
+#include "scene/mesh_objects.h"
+#include "scene/scene_loader.h"
+#include "support/shared_context.h"
+
+using namespace prism;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A unit icosahedron subdivided once and pushed onto the sphere: 80 triangles.
+struct SmallMesh {
+  std::vector<Vec3> v;
+  std::vector<std::array<int, 3>> f;
+};
+
+SmallMesh icosphere() {
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  SmallMesh m;
+  m.v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+         {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  m.f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+         {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+         {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for (Vec3& p : m.v) p = normalize(p);
+  SmallMesh out;
+  out.v = m.v;
+  auto mid = [&](int a, int b) {
+    out.v.push_back(normalize((m.v[a] + m.v[b]) * 0.5));
+    return static_cast<int>(out.v.size()) - 1;
+  };
+  for (auto& tri : m.f) {
+    int ab = mid(tri[0], tri[1]), bc = mid(tri[1], tri[2]), ca = mid(tri[2], tri[0]);
+    out.f.push_back({tri[0], ab, ca});
+    out.f.push_back({tri[1], bc, ab});
+    out.f.push_back({tri[2], ca, bc});
+    out.f.push_back({ab, bc, ca});
+  }
+  return out;
+}
+
+fs::path scratch() {
+  fs::path dir = fs::temp_directory_path() / ("prism-mesh-scene-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+void writeObj(const SmallMesh& m, const fs::path& p) {
+  std::ofstream o(p);
+  o.precision(9);
+  for (auto& v : m.v) o << "v " << v.x << " " << v.y << " " << v.z << "\n";
+  for (auto& f : m.f) o << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << "\n";
+}
+
+void writeOff(const SmallMesh& m, const fs::path& p) {
+  std::ofstream o(p);
+  o.precision(9);
+  o << "OFF\n" << m.v.size() << " " << m.f.size() << " 0\n";
+  for (auto& v : m.v) o << v.x << " " << v.y << " " << v.z << "\n";
+  for (auto& f : m.f) o << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
+}
+
+void writePly(const SmallMesh& m, const fs::path& p, bool binary) {
+  std::ofstream o(p, std::ios::binary);
+  o << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\n"
+    << "element vertex " << m.v.size() << "\nproperty float x\nproperty float y\nproperty float z\n"
+    << "element face " << m.f.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  o.precision(9);
+  for (auto& v : m.v) {
+    float xyz[3] = {float(v.x), float(v.y), float(v.z)};
+    if (binary)
+      o.write(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    else
+      o << xyz[0] << " " << xyz[1] << " " << xyz[2] << "\n";
+  }
+  for (auto& f : m.f) {
+    if (binary) {
+      unsigned char n = 3;
+      o.write(reinterpret_cast<const char*>(&n), 1);
+      o.write(reinterpret_cast<const char*>(f.data()), 3 * sizeof(int));
+    } else {
+      o << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
+    }
+  }
+}
+
+RenderResult renderMesh(const fs::path& file) {
+  Scene scene = sceneForMesh(MeshCache::global().load(file.string()));
+  RenderOptions opt = RenderOptions::fromScene(scene);
+  opt.width = 64;
+  opt.height = 48;
+  return test::sharedRenderer().render(scene, opt);
+}
+
+}  // namespace
+
+TEST_CASE("the same mesh as OBJ, PLY (ascii and binary) and OFF renders identical primid and depth AOVs",
+          "[render][mesh]") {
+  SmallMesh m = icosphere();
+  fs::path dir = scratch();
+  writeObj(m, dir / "ico.obj");
+  writeOff(m, dir / "ico.off");
+  writePly(m, dir / "ico_ascii.ply", false);
+  writePly(m, dir / "ico_binary.ply", true);
+  RenderResult reference = renderMesh(dir / "ico_binary.ply");
+  int hits = 0;
+  for (int32_t id : reference.primid) hits += id >= 0;
+  CHECK(hits > 300);  // the sphere fills a good part of the 64x48 frame
+  for (const char* name : {"ico.obj", "ico.off", "ico_ascii.ply"}) {
+    INFO(name);
+    RenderResult r = renderMesh(dir / name);
+    CHECK(r.primid == reference.primid);
+    CHECK(std::memcmp(r.depth.data(), reference.depth.data(), r.depth.size() * sizeof(float)) == 0);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("objects naming one mesh file share it and number their triangles in object order", "[render][mesh]") {
+  SmallMesh m = icosphere();
+  fs::path dir = scratch();
+  writeObj(m, dir / "ico.obj");
+  std::string json = R"({
+    "camera": {"position": [0, 0, 9], "look_at": [0, 0, 0], "fov": 40},
+    "film": {"width": 48, "height": 32},
+    "materials": {"red": {"diffuse": [0.8, 0.1, 0.1]}},
+    "lights": [{"position": [0, 5, 9]}],
+    "objects": [
+      {"type": "mesh", "file": "ico.obj", "transform": {"translate": [-2.5, 0, 0]}},
+      {"type": "mesh", "file": "ico.obj", "material": "red", "transform": {"translate": [2.5, 0, 0]}, "smooth": true},
+      {"type": "sphere", "center": [0, 0, 0], "radius": 0.5}
+    ]
+  })";
+  std::ofstream(dir / "scene.json") << json;
+  Scene scene = loadSceneFile((dir / "scene.json").string());
+  REQUIRE(scene.objects.size() == 3);
+  CHECK(scene.objects[0].mesh == scene.objects[1].mesh);
+  CHECK(scene.objects[1].material_override);
+  GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
+  const size_t n = m.f.size();
+  REQUIRE(gpu.objects.size() == 2 * n + 1);
+  CHECK(gpu.objects[2 * n].type == OBJECT_SPHERE);
+  CHECK(gpu.objects[n].material == 1);  // "red", for every triangle of the second copy
+  CHECK(gpu.objects[0].material == 0);
+
+  RenderResult r = test::sharedRenderer().render(scene, RenderOptions::fromScene(scene));
+  // Left third: the first copy (ids 0..n-1); right third: the second (n..2n-1); centre: the sphere.
+  auto id = [&](int i, int j) { return r.primid[static_cast<size_t>(j) * r.width + i]; };
+  CHECK((id(10, 16) >= 0 && id(10, 16) < int(n)));
+  CHECK((id(37, 16) >= int(n) && id(37, 16) < int(2 * n)));
+  CHECK(id(24, 16) == int(2 * n));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a point cloud is refused for rendering with the reason", "[render][mesh]") {
+  fs::path dir = scratch();
+  std::ofstream(dir / "points.off") << "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n";
+  std::ofstream(dir / "scene.json") << R"({"objects": [{"type": "mesh", "file": "points.off"}]})";
+  CHECK_THROWS_WITH(loadSceneFile((dir / "scene.json").string()),
+                    Catch::Contains("objects[0].file") && Catch::Contains("no faces"));
+  CHECK_THROWS_WITH(sceneForMesh(MeshCache::global().load((dir / "points.off").string())),
+                    Catch::Contains("no faces"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the quick-render camera frames the whole mesh", "[render][mesh]") {
+  SmallMesh m = icosphere();
+  fs::path dir = scratch();
+  writeOff(m, dir / "ico.off");
+  Scene scene = sceneForMesh(MeshCache::global().load((dir / "ico.off").string()));
+  RenderOptions opt = RenderOptions::fromScene(scene);
+  CameraBasis b = cameraBasis(scene.camera, opt.width, opt.height);
+  // Every vertex projects inside the film, and the silhouette fills a good part of it.
+  double widest = 0;
+  for (const Vec3& v : m.v) {
+    Vec3 d = v - b.origin;
+    double z = dot(d, b.forward);
+    REQUIRE(z > 0);
+    double x = dot(d, normalize(b.right)) / z / length(b.right);
+    double y = dot(d, normalize(b.up)) / z / length(b.up);
+    CHECK(std::fabs(x) < 1);
+    CHECK(std::fabs(y) < 1);
+    widest = std::max(widest, std::fabs(y));
+  }
+  CHECK(widest > 0.35);  // the bounding sphere of the box is wider than the mesh itself
+  CHECK(scene.lights.size() == 1);
+  CHECK(scene.lights[0].position == scene.camera.position);
+  fs::remove_all(dir);
+}
