@@ -1,52 +1,154 @@
 #include "render/ray_queries.h"
 
+#include <algorithm>
+#include <chrono>
+
 #include "kernels/shared/contribution_gpu.h"
 #include "render/gpu_scene.h"
 
 namespace prism {
 namespace {
 
-struct UploadedScene {
-  Buffer objects, materials;
-  int object_count;
-  UploadedScene(Context& context, const Scene& scene) {
-    RenderOptions options = RenderOptions::fromScene(scene);
-    GpuScene gpu = flattenScene(scene, options);
-    objects = Buffer(context, gpu.objects.size() * sizeof(ObjectGpu));
-    objects.writeVector(gpu.objects);
-    materials = Buffer(context, gpu.materials.size() * sizeof(MaterialGpu));
-    materials.writeVector(gpu.materials);
-    object_count = static_cast<int>(gpu.objects.size());
-  }
-};
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+RayGpu unitRay(const RayGpu& in) {
+  RayGpu r = in;
+  r.wr = r.wg = r.wb = 1.0f;  // the contribution then equals the transmittance
+  return r;
+}
 
 }  // namespace
 
-std::vector<HitGpu> traceClosest(Context& context, const Scene& scene, const std::vector<RayGpu>& rays) {
-  UploadedScene s(context, scene);
-  Buffer ray_buffer(context, rays.size() * sizeof(RayGpu));
-  ray_buffer.writeVector(rays);
-  Buffer hits(context, rays.size() * sizeof(HitGpu));
-  int count = static_cast<int>(rays.size());
-  context.launch(context.kernel("extend.cl", "extend")).arg(ray_buffer).arg(count).arg(s.objects).arg(s.object_count).arg(hits).run(rays.size());
-  return hits.readVector<HitGpu>(rays.size());
+std::vector<RayGpu> toRayGpu(const std::vector<QueryRay>& rays) {
+  std::vector<RayGpu> out(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const QueryRay& q = rays[i];
+    RayGpu& r = out[i];
+    r = RayGpu{};
+    r.ox = q.ox;
+    r.oy = q.oy;
+    r.oz = q.oz;
+    r.tmin = q.tmin;
+    r.dx = q.dx;
+    r.dy = q.dy;
+    r.dz = q.dz;
+    r.tmax = q.tmax;
+    r.wr = r.wg = r.wb = 1.0f;
+    r.pixel = static_cast<int>(i);
+    r.kind = RAY_KIND_PRIMARY;
+  }
+  return out;
 }
 
-std::vector<float> traceTransmittance(Context& context, const Scene& scene, const std::vector<RayGpu>& rays) {
-  UploadedScene s(context, scene);
-  std::vector<RayGpu> unit = rays;
-  for (RayGpu& r : unit) r.wr = r.wg = r.wb = 1.0f;  // the contribution then equals the transmittance
-  Buffer ray_buffer(context, unit.size() * sizeof(RayGpu));
-  ray_buffer.writeVector(unit);
-  Buffer out(context, unit.size() * sizeof(ContributionGpu));
-  int count = static_cast<int>(unit.size());
-  context.launch(context.kernel("occlude.cl", "occlude"))
-      .arg(ray_buffer).arg(count).arg(s.objects).arg(s.object_count).arg(s.materials).arg(out)
-      .run(unit.size());
-  std::vector<ContributionGpu> c = out.readVector<ContributionGpu>(unit.size());
-  std::vector<float> result(c.size());
-  for (size_t i = 0; i < c.size(); ++i) result[i] = c[i].r;
+RayQueryEngine::RayQueryEngine(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
+                               std::vector<MaterialGpu> materials, const AccelBuildOptions& options)
+    : m_context(context), m_objects(std::move(objects)) {
+  m_accel = buildAccel(kind, m_objects, options);
+  m_object_buffer = Buffer(context, m_objects.size() * sizeof(ObjectGpu));
+  m_object_buffer.writeVector(m_objects);
+  m_has_materials = !materials.empty();
+  if (m_has_materials) {
+    m_material_buffer = Buffer(context, materials.size() * sizeof(MaterialGpu));
+    m_material_buffer.writeVector(materials);
+  }
+  m_buffers.upload(context, *m_accel);
+  auto start = Clock::now();
+  m_extend = context.kernel("extend.cl", "extend", m_accel->kernel_options);
+  m_occlude = context.kernel("occlude.cl", "occlude", m_accel->kernel_options);
+  // PoCL finishes compiling a kernel at its first launch with a new work-group
+  // size (PERF-NOTES); one tiny launch of each keeps that out of the timings.
+  RayGpu probe{};
+  probe.dz = 1.0f;
+  probe.tmax = 1.0f;
+  intersect(std::vector<RayGpu>{probe});
+  runOcclude(std::vector<RayGpu>{probe}, m_has_materials, nullptr);
+  m_compile_seconds = secondsSince(start);
+}
+
+std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<QueryRay>& rays, double* trace_seconds) {
+  return intersect(toRayGpu(rays), trace_seconds);
+}
+
+std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, double* trace_seconds) {
+  std::vector<HitGpu> hits(rays.size());
+  double seconds = 0;
+  const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
+  Buffer ray_buffer(m_context, batch * sizeof(RayGpu));
+  Buffer hit_buffer(m_context, batch * sizeof(HitGpu));
+  for (std::size_t first = 0; first < rays.size(); first += batch) {
+    const std::size_t n = std::min(batch, rays.size() - first);
+    ray_buffer.write(rays.data() + first, n * sizeof(RayGpu));
+    auto start = Clock::now();
+    KernelLaunch launch = m_context.launch(m_extend);
+    launch.arg(ray_buffer).arg(static_cast<int>(n));
+    m_buffers.bind(launch, m_object_buffer, static_cast<int>(m_objects.size())).arg(hit_buffer).run(n);
+    m_context.finish();
+    seconds += secondsSince(start);
+    hit_buffer.read(hits.data() + first, n * sizeof(HitGpu));
+  }
+  if (trace_seconds) *trace_seconds = seconds;
+  return hits;
+}
+
+std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, bool with_materials,
+                                              double* trace_seconds) {
+  std::vector<float> carried(rays.size());
+  double seconds = 0;
+  const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
+  Buffer ray_buffer(m_context, batch * sizeof(RayGpu));
+  Buffer out(m_context, batch * sizeof(ContributionGpu));
+  const Buffer no_materials;  // NULL in the kernel: every primitive opaque
+  std::vector<RayGpu> unit(batch);
+  std::vector<ContributionGpu> c(batch);
+  for (std::size_t first = 0; first < rays.size(); first += batch) {
+    const std::size_t n = std::min(batch, rays.size() - first);
+    for (std::size_t i = 0; i < n; ++i) unit[i] = unitRay(rays[first + i]);
+    ray_buffer.write(unit.data(), n * sizeof(RayGpu));
+    auto start = Clock::now();
+    KernelLaunch launch = m_context.launch(m_occlude);
+    launch.arg(ray_buffer).arg(static_cast<int>(n));
+    m_buffers.bind(launch, m_object_buffer, static_cast<int>(m_objects.size()))
+        .arg(with_materials ? m_material_buffer : no_materials)
+        .arg(out)
+        .run(n);
+    m_context.finish();
+    seconds += secondsSince(start);
+    out.read(c.data(), n * sizeof(ContributionGpu));
+    for (std::size_t i = 0; i < n; ++i) carried[first + i] = c[i].r;
+  }
+  if (trace_seconds) *trace_seconds = seconds;
+  return carried;
+}
+
+std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<QueryRay>& rays, double* trace_seconds) {
+  return occluded(toRayGpu(rays), trace_seconds);
+}
+
+std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<RayGpu>& rays, double* trace_seconds) {
+  std::vector<float> carried = runOcclude(rays, false, trace_seconds);
+  std::vector<std::uint8_t> result(carried.size());
+  for (std::size_t i = 0; i < carried.size(); ++i) result[i] = carried[i] == 0.0f ? 1 : 0;
   return result;
+}
+
+std::vector<float> RayQueryEngine::transmittance(const std::vector<RayGpu>& rays, double* trace_seconds) {
+  return runOcclude(rays, m_has_materials, trace_seconds);
+}
+
+std::vector<HitGpu> traceClosest(Context& context, const Scene& scene, const std::vector<RayGpu>& rays,
+                                 AccelKind accel) {
+  GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
+  RayQueryEngine engine(context, std::move(gpu.objects), accel, std::move(gpu.materials));
+  return engine.intersect(rays);
+}
+
+std::vector<float> traceTransmittance(Context& context, const Scene& scene, const std::vector<RayGpu>& rays,
+                                      AccelKind accel) {
+  GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
+  RayQueryEngine engine(context, std::move(gpu.objects), accel, std::move(gpu.materials));
+  return engine.transmittance(rays);
 }
 
 }  // namespace prism

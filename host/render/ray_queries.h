@@ -1,22 +1,87 @@
 // Closest-hit and any-hit queries for caller-supplied rays, through the same
-// extend / occlude kernels the renderer uses. The tests check the kernels'
-// intersection routines through this path.
+// extend / occlude kernels the renderer uses, with any acceleration structure.
+//   - traceClosest / traceTransmittance: one-shot queries on a scene (the
+//     tests check the kernels' intersection routines through this path);
+//   - RayQueryEngine: build once, query many times, with the tracing timed
+//     alone (`prism trace`, prismIntersect / prismOccluded, prism-bench).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "accel/accel_buffers.h"
+#include "accel/accel_structure.h"
 #include "device/context.h"
 #include "kernels/shared/hit_gpu.h"
+#include "kernels/shared/material_gpu.h"
+#include "kernels/shared/object_gpu.h"
 #include "kernels/shared/ray_gpu.h"
 #include "scene/scene.h"
 
 namespace prism {
 
 // Closest hit of each ray (only origin, direction, tmin and tmax are read).
-std::vector<HitGpu> traceClosest(Context& context, const Scene& scene, const std::vector<RayGpu>& rays);
+// `none` by default: the brute-force reference.
+std::vector<HitGpu> traceClosest(Context& context, const Scene& scene, const std::vector<RayGpu>& rays,
+                                 AccelKind accel = AccelKind::None);
 
 // Fraction of light each ray carries from tmin to tmax (1 unblocked, 0 blocked by
 // an opaque object, the product of k_trans over semitransparent ones).
-std::vector<float> traceTransmittance(Context& context, const Scene& scene, const std::vector<RayGpu>& rays);
+std::vector<float> traceTransmittance(Context& context, const Scene& scene, const std::vector<RayGpu>& rays,
+                                      AccelKind accel = AccelKind::None);
+
+// A ray as `prism trace` reads it: 32 bytes, origin + tmin, direction + tmax.
+struct QueryRay {
+  float ox, oy, oz, tmin;
+  float dx, dy, dz, tmax;
+};
+static_assert(sizeof(QueryRay) == 32, "QueryRay is the 32-byte record of prism trace");
+
+// A structure built over a fixed set of primitives, uploaded, and its two
+// kernels compiled and warmed up, ready for any number of ray batches. The
+// hit record is HitGpu, the 16-byte record `prism trace` writes: t (+inf on a
+// miss), prim (-1 on a miss), u and v (barycentrics of vertices 1 and 2).
+class RayQueryEngine {
+ public:
+  // `materials` may be empty: transmittance() then treats every primitive as
+  // opaque (and occluded() always does).
+  RayQueryEngine(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
+                 std::vector<MaterialGpu> materials = {}, const AccelBuildOptions& options = {});
+
+  // Closest hits. `trace_seconds` (optional) receives the time of the kernel
+  // runs alone: no upload, read-back, build or compilation.
+  std::vector<HitGpu> intersect(const std::vector<QueryRay>& rays, double* trace_seconds = nullptr);
+  std::vector<HitGpu> intersect(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr);
+  // 1 where something lies strictly between tmin and tmax along the ray.
+  std::vector<std::uint8_t> occluded(const std::vector<QueryRay>& rays, double* trace_seconds = nullptr);
+  std::vector<std::uint8_t> occluded(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr);
+  // Light carried from tmin to tmax, as the renderer's shadow feelers see it.
+  std::vector<float> transmittance(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr);
+
+  const DeviceAccel& accel() const { return *m_accel; }
+  std::size_t objectCount() const { return m_objects.size(); }
+  // Seconds spent compiling (or loading from the cache) the two kernels.
+  double compileSeconds() const { return m_compile_seconds; }
+
+  // Rays per kernel launch; bigger batches are split.
+  static constexpr std::size_t kBatchRays = std::size_t(1) << 22;
+
+ private:
+  std::vector<float> runOcclude(const std::vector<RayGpu>& rays, bool with_materials, double* trace_seconds);
+
+  Context& m_context;
+  std::vector<ObjectGpu> m_objects;
+  std::unique_ptr<DeviceAccel> m_accel;
+  Buffer m_object_buffer, m_material_buffer;
+  bool m_has_materials = false;
+  AccelBuffers m_buffers;
+  cl_kernel m_extend = nullptr, m_occlude = nullptr;
+  double m_compile_seconds = 0;
+};
+
+// The 64-byte queue record of a query ray (weight 1, primary, pixel = index).
+std::vector<RayGpu> toRayGpu(const std::vector<QueryRay>& rays);
 
 }  // namespace prism

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "accel/accel_structure.h"
 #include "scene/scene.h"
 
 namespace prism {
@@ -15,6 +16,7 @@ struct RenderOptions {
   int max_depth = 5;
   double min_weight = 0.01;
   std::uint64_t seed = 0;
+  AccelKind accel = AccelKind::Bvh;  // spatial index for extend / occlude
 
   static RenderOptions fromScene(const Scene& scene);
   // Throws std::invalid_argument naming the field when a value is out of range.

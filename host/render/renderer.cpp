@@ -23,9 +23,7 @@ void fillZero(Buffer& b, size_t count) {
 
 Renderer::Renderer(Context& context) : m_context(context) {
   m_generate = context.kernel("generate.cl", "generate");
-  m_extend = context.kernel("extend.cl", "extend");
   m_shade = context.kernel("shade.cl", "shade");
-  m_occlude = context.kernel("occlude.cl", "occlude");
   m_count = context.kernel("count_rays.cl", "count_rays");
   m_scatter = context.kernel("scatter_rays.cl", "scatter_rays");
   m_accumulate = context.kernel("accumulate.cl", "accumulate");
@@ -47,6 +45,14 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_camera.write(&gpu.camera, sizeof(CameraGpu));
   m_objects = Buffer(m_context, gpu.objects.size() * sizeof(ObjectGpu));
   m_objects.writeVector(gpu.objects);
+  {
+    std::unique_ptr<DeviceAccel> accel = buildAccel(options.accel, gpu.objects);
+    m_accel.upload(m_context, *accel);
+    result.stats.accel = options.accel;
+    result.stats.accel_stats = accel->stats;
+    m_extend = m_context.kernel("extend.cl", "extend", accel->kernel_options);
+    m_occlude = m_context.kernel("occlude.cl", "occlude", accel->kernel_options);
+  }
   m_materials = Buffer(m_context, gpu.materials.size() * sizeof(MaterialGpu));
   m_materials.writeVector(gpu.materials);
   m_lights = Buffer(m_context, gpu.lights.size() * sizeof(LightGpu));
@@ -114,7 +120,11 @@ void Renderer::traceSlice(int depth, size_t n) {
   const RenderOptions& opt = *m_options;
   m_stats->rays_per_depth[depth] += n;
 
-  m_context.launch(m_extend).arg(m_work).arg(static_cast<int>(n)).arg(m_objects).arg(object_count).arg(m_hits).run(n);
+  {
+    KernelLaunch extend = m_context.launch(m_extend);
+    extend.arg(m_work).arg(static_cast<int>(n));
+    m_accel.bind(extend, m_objects, object_count).arg(m_hits).run(n);
+  }
 
   cl_float4 ambient, background;
   for (int i = 0; i < 4; ++i) {
@@ -146,14 +156,9 @@ void Renderer::traceSlice(int depth, size_t n) {
   if (light_count > 0) {
     size_t shadow_count = compact(m_shadows, n * light_count, m_shadow_queue, m_stats->rays_by_kind);
     if (shadow_count > 0) {
-      m_context.launch(m_occlude)
-          .arg(m_shadow_queue)
-          .arg(static_cast<int>(shadow_count))
-          .arg(m_objects)
-          .arg(object_count)
-          .arg(m_materials)
-          .arg(m_shadow_light)
-          .run(shadow_count);
+      KernelLaunch occlude = m_context.launch(m_occlude);
+      occlude.arg(m_shadow_queue).arg(static_cast<int>(shadow_count));
+      m_accel.bind(occlude, m_objects, object_count).arg(m_materials).arg(m_shadow_light).run(shadow_count);
       accumulate(m_shadow_light, shadow_count);
     }
   }

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "accel/accel_buffers.h"
+#include "accel/accel_structure.h"
 #include "device/context.h"
 #include "render/gpu_scene.h"
 #include "render/render_options.h"
@@ -22,6 +24,8 @@ struct RenderStats {
   std::array<std::uint64_t, 4> rays_by_kind{};  // indexed by RAY_KIND_*
   std::array<std::uint64_t, 32> rays_per_depth{};
   int waves = 0;
+  AccelKind accel = AccelKind::Bvh;  // the structure used; accelName() names it
+  AccelStats accel_stats;            // its build (host) statistics
 
   std::uint64_t totalRays() const { return rays_by_kind[0] + rays_by_kind[1] + rays_by_kind[2] + rays_by_kind[3]; }
 };
@@ -68,6 +72,7 @@ class Renderer {
   const GpuScene* m_scene = nullptr;
   const RenderOptions* m_options = nullptr;
   RenderStats* m_stats = nullptr;
+  AccelBuffers m_accel;
   Buffer m_camera, m_objects, m_materials, m_lights, m_film, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
   std::vector<Buffer> m_levels;  // queue of each depth, up to 2 * kSliceRays rays
   Buffer m_work, m_hits, m_emit, m_children, m_shadows, m_shadow_queue, m_shadow_light, m_counts, m_offsets;

@@ -28,6 +28,7 @@ struct Material {
   double transmit = 0;    // k_trans: weight of the refracted ray and shadow transmission
   double ior = 1;         // index of refraction of the object's inside
   Texture texture;        // multiplies ambient and diffuse
+  std::string diffuse_map;  // image file a mesh's material names for diffuse (MTL map_Kd), or ""
 };
 
 }  // namespace prism

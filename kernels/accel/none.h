@@ -1,19 +1,12 @@
 /* Brute force: every object against every ray. The reference the acceleration
- * structures are checked against, and the only choice until they exist. */
+ * structures are checked against; it ignores the tree buffers. */
 #ifndef PRISM_ACCEL_NONE_H
 #define PRISM_ACCEL_NONE_H
 
-#include "geometry/object.h"
-#include "shared/material_gpu.h"
-
-#define ACCEL_PARAMS __global const ObjectGpu *objects, int object_count
-#define ACCEL_ARGS objects, object_count
+#include "accel/leaf_packets.h"
 
 inline bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
-  hit->t = PRISM_INF;
-  hit->prim = -1;
-  hit->u = 0.0f;
-  hit->v = 0.0f;
+  accel_miss(hit);
   float best = tmax;
   for (int i = 0; i < object_count; ++i) {
     float t, u, v;
@@ -35,8 +28,7 @@ inline float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* mater
   float carried = 1.0f;
   for (int i = 0; i < object_count && carried > 0.0f; ++i) {
     float t, u, v;
-    if (object_intersect(&objects[i], o, d, tmin, tmax, &t, &u, &v))
-      carried *= materials[objects[i].material].transmit;
+    if (object_intersect(&objects[i], o, d, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, objects, i);
   }
   return carried;
 }

@@ -193,7 +193,7 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
                    "material": "glas"}]})") ==
           "bad.json: objects[0].material: unknown material 'glas' (known: default, glass, mirror)");
     CHECK(errorOf(R"({"objects": [{"type": "cone"}]})") ==
-          "bad.json: objects[0].type: unknown object type 'cone' (expected sphere, box, plane, triangle)");
+          "bad.json: objects[0].type: unknown object type 'cone' (expected sphere, box, plane, triangle, mesh)");
     CHECK(errorOf("[]") == "bad.json: expected a JSON object at top level, got []");
   }
 

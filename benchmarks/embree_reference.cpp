@@ -1,0 +1,133 @@
+#include "embree_reference.h"
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace prism::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Runs body(first, last) over [0, n) in chunks on `threads` threads.
+template <typename F>
+void parallelChunks(std::size_t n, int threads, F body) {
+  constexpr std::size_t kChunk = 4096;
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (;;) {
+      std::size_t first = next.fetch_add(kChunk);
+      if (first >= n) return;
+      body(first, std::min(n, first + kChunk));
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+}
+
+RTCRay makeRay(const QueryRay& q) {
+  RTCRay r;
+  r.org_x = q.ox;
+  r.org_y = q.oy;
+  r.org_z = q.oz;
+  r.tnear = q.tmin;
+  r.dir_x = q.dx;
+  r.dir_y = q.dy;
+  r.dir_z = q.dz;
+  r.time = 0;
+  r.tfar = q.tmax;
+  r.mask = 0xFFFFFFFFu;
+  r.id = 0;
+  r.flags = 0;
+  return r;
+}
+
+}  // namespace
+
+struct EmbreeReference::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  int threads = 1;
+};
+
+EmbreeReference::EmbreeReference(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices,
+                                 int threads)
+    : m_impl(std::make_unique<Impl>()) {
+  m_impl->threads = std::max(1, threads);
+  std::string config = "threads=" + std::to_string(m_impl->threads);
+  m_impl->device = rtcNewDevice(config.c_str());
+  if (!m_impl->device) throw std::runtime_error("Embree: rtcNewDevice failed");
+  m_impl->scene = rtcNewScene(m_impl->device);
+  RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  const std::size_t vertex_count = positions.size() / 3, triangle_count = indices.size() / 3;
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                        3 * sizeof(float), vertex_count));
+  auto* i = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                           3 * sizeof(unsigned), triangle_count));
+  if (vertex_count) std::memcpy(v, positions.data(), positions.size() * sizeof(float));
+  if (triangle_count) std::memcpy(i, indices.data(), indices.size() * sizeof(unsigned));
+  rtcCommitGeometry(geom);
+  rtcAttachGeometry(m_impl->scene, geom);
+  rtcReleaseGeometry(geom);
+  auto start = Clock::now();
+  rtcCommitScene(m_impl->scene);
+  m_build_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+EmbreeReference::~EmbreeReference() {
+  if (m_impl->scene) rtcReleaseScene(m_impl->scene);
+  if (m_impl->device) rtcReleaseDevice(m_impl->device);
+}
+
+std::vector<HitGpu> EmbreeReference::intersect(const std::vector<QueryRay>& rays, double* seconds) const {
+  std::vector<HitGpu> hits(rays.size());
+  RTCScene scene = m_impl->scene;
+  auto start = Clock::now();
+  parallelChunks(rays.size(), m_impl->threads, [&](std::size_t first, std::size_t last) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    for (std::size_t k = first; k < last; ++k) {
+      RTCRayHit rh;
+      rh.ray = makeRay(rays[k]);
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(scene, &context, &rh);
+      HitGpu& h = hits[k];
+      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+        h = HitGpu{INFINITY, -1, 0, 0};
+      } else {
+        h = HitGpu{rh.ray.tfar, static_cast<int>(rh.hit.primID), rh.hit.u, rh.hit.v};
+      }
+    }
+  });
+  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return hits;
+}
+
+std::vector<std::uint8_t> EmbreeReference::occluded(const std::vector<QueryRay>& rays, double* seconds) const {
+  std::vector<std::uint8_t> out(rays.size());
+  RTCScene scene = m_impl->scene;
+  auto start = Clock::now();
+  parallelChunks(rays.size(), m_impl->threads, [&](std::size_t first, std::size_t last) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    for (std::size_t k = first; k < last; ++k) {
+      RTCRay r = makeRay(rays[k]);
+      rtcOccluded1(scene, &context, &r);
+      out[k] = r.tfar == -INFINITY ? 1 : 0;
+    }
+  });
+  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return out;
+}
+
+}  // namespace prism::bench

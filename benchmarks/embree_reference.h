@@ -1,0 +1,33 @@
+// The reference column of prism-bench: the same triangles and rays through
+// Intel Embree 3 (rtcIntersect1 / rtcOccluded1), traced by as many threads as
+// the OpenCL device has compute units. Embree is used here and nowhere else.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "kernels/shared/hit_gpu.h"
+#include "render/ray_queries.h"
+
+namespace prism::bench {
+
+class EmbreeReference {
+ public:
+  // positions: xyz per vertex; indices: 3 per triangle (primid = triangle index).
+  EmbreeReference(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices, int threads);
+  ~EmbreeReference();
+  EmbreeReference(const EmbreeReference&) = delete;
+  EmbreeReference& operator=(const EmbreeReference&) = delete;
+
+  double buildSeconds() const { return m_build_seconds; }
+  std::vector<HitGpu> intersect(const std::vector<QueryRay>& rays, double* seconds) const;
+  std::vector<std::uint8_t> occluded(const std::vector<QueryRay>& rays, double* seconds) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+  double m_build_seconds = 0;
+};
+
+}  // namespace prism::bench

@@ -1,0 +1,29 @@
+// Log-log line charts for prism-bench, drawn by a small rasteriser (lines,
+// markers, a 5x7 bitmap font) and written as PNG through OpenImageIO, so the
+// benchmark needs no plotting package.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace prism::bench {
+
+struct PlotSeries {
+  std::string name;
+  std::vector<std::pair<double, double>> points;  // (x, y), both > 0; others are skipped
+};
+
+// One line per series with a legend, decade grid lines and labels. Throws
+// std::runtime_error naming the path when the file cannot be written.
+void writeLogLogPlot(const std::string& path, const std::string& title, const std::string& x_label,
+                     const std::string& y_label, const std::vector<PlotSeries>& series);
+
+// The plot as RGB8 pixels (row-major, top row first), for tests and callers
+// that write elsewhere.
+std::vector<std::uint8_t> renderLogLogPlot(const std::string& title, const std::string& x_label,
+                                           const std::string& y_label, const std::vector<PlotSeries>& series,
+                                           int* width, int* height);
+
+}  // namespace prism::bench

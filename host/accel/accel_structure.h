@@ -1,0 +1,93 @@
+// The acceleration structures prism offers (BVH, octree, BSP, or none) behind
+// one interface: build one over the flattened primitives, get back the host
+// arrays to upload, the kernel build options that select its traversal, and the
+// statistics the benchmark and the render summary report.
+// What is not here: uploading (accel_buffers.h) and the kernels (kernels/accel/).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernels/shared/object_gpu.h"
+#include "kernels/shared/tri_packet_gpu.h"
+
+namespace prism {
+
+enum class AccelKind { None, Bvh, Octree, Bsp };
+
+// Every kind, in the order the benchmark and the tests list them.
+const std::vector<AccelKind>& allAccelKinds();
+// "none", "bvh", "octree", "bsp".
+const char* accelName(AccelKind kind);
+// The kind named `name`; throws std::invalid_argument naming the valid names.
+AccelKind parseAccelKind(const std::string& name);
+// Same without throwing; false for an unknown name.
+bool tryParseAccelKind(const std::string& name, AccelKind* kind);
+
+struct AccelStats {
+  double build_seconds = 0;    // building and flattening, host only
+  std::size_t bytes = 0;       // device memory: nodes + leaf packets + unbounded list
+  std::size_t node_count = 0;  // every node, inner and leaf (BVH: wide inner nodes + leaves)
+  std::size_t leaf_count = 0;  // leaves holding at least one primitive
+  std::size_t empty_leaf_count = 0;
+  double mean_prims_per_leaf = 0;  // references / non-empty leaves
+  // Surface area heuristic of the final structure, traversal and intersection
+  // costs 1: sum over inner nodes of A(node)/A(root) + sum over leaves of
+  // A(leaf)/A(root) * primitives, with A the node's box (BVH) or cell.
+  double sah_cost = 0;
+  std::size_t primitives = 0;  // bounded primitives in the structure
+  std::size_t unbounded = 0;   // planes (and anything without finite bounds), tested for every ray
+  std::size_t references = 0;  // primitive references in all leaves
+  std::size_t straddling = 0;  // primitives referenced by more than one leaf
+  double duplication = 1;      // references / primitives
+  std::size_t exact_tests = 0;  // CGAL primitive/cell overlap tests the builder needed
+  int max_depth = 0;
+};
+
+// Plain 16-byte word: the node buffer is one array of these, read as float4
+// (and as the structure's own node type) by the kernels.
+struct alignas(16) AccelWord {
+  float v[4];
+};
+
+// What a build produces for the device. The buffers are the same list for
+// every structure (kernels/accel/accel.h, ACCEL_PARAMS), so the renderer binds
+// one set whichever is chosen.
+struct DeviceAccel {
+  AccelKind kind = AccelKind::None;
+  // Build options for extend.cl / occlude.cl: -DPRISM_ACCEL_<KIND> and the
+  // traversal stack depth this tree needs.
+  std::string kernel_options;
+  // Words 0 and 1: the scene box of the bounded primitives (lo xyz, hi xyz);
+  // from word 2: the structure's nodes (BvhNodeGpu, OctreeNodeGpu, BspNodeGpu).
+  std::vector<AccelWord> nodes;
+  std::vector<TriPacketGpu> packets;       // leaf contents
+  std::vector<std::int32_t> unbounded;     // object indices tested by every ray
+  AccelStats stats;
+};
+
+struct AccelBuildOptions {
+  int threads = 0;  // 0: std::thread::hardware_concurrency()
+  // Octree: a cell splits while it holds more than this many primitives and
+  // its depth is below octree_max_depth.
+  int octree_leaf_prims = 8;
+  int octree_max_depth = 10;
+  // BSP: see bsp_builder.h for the termination rule these feed.
+  double bsp_traversal_cost = 1.0;
+  double bsp_intersection_cost = 1.5;
+  double bsp_empty_bonus = 0.8;
+};
+
+// Builds `kind` over `objects` (the flattened scene, one entry per primitive;
+// the index is the primitive id). Never fails on odd input: degenerate and
+// non-finite primitives are kept so every structure answers like `none`.
+std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<ObjectGpu>& objects,
+                                        const AccelBuildOptions& options = {});
+
+// One line for logs and the render summary: "bvh: 1234 nodes, ... ".
+std::string describeAccel(const DeviceAccel& accel);
+
+}  // namespace prism

@@ -1,0 +1,59 @@
+#include "accel/leaf_packets.h"
+
+namespace prism {
+namespace {
+
+TriPacketGpu emptyPacket() {
+  TriPacketGpu p{};
+  for (int k = 0; k < PACKET_LANES; ++k) p.prim[k] = PACKET_EMPTY;
+  return p;
+}
+
+void putTriangle(TriPacketGpu& p, int lane, const ObjectGpu& ob, std::int32_t id) {
+  const float* v = ob.p;
+  p.v0x[lane] = v[0];
+  p.v0y[lane] = v[1];
+  p.v0z[lane] = v[2];
+  // Float subtraction, as the kernel's scalar triangle_intersect does it.
+  p.e1x[lane] = v[3] - v[0];
+  p.e1y[lane] = v[4] - v[1];
+  p.e1z[lane] = v[5] - v[2];
+  p.e2x[lane] = v[6] - v[0];
+  p.e2y[lane] = v[7] - v[1];
+  p.e2z[lane] = v[8] - v[2];
+  p.prim[lane] = id;
+}
+
+}  // namespace
+
+std::size_t leafPacketCount(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n) {
+  std::size_t tris = 0;
+  for (std::size_t i = 0; i < n; ++i) tris += isPacketTriangle(objects[ids[i]]) ? 1 : 0;
+  return (tris + PACKET_LANES - 1) / PACKET_LANES + (n - tris + PACKET_LANES - 1) / PACKET_LANES;
+}
+
+PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
+                              std::vector<TriPacketGpu>& out) {
+  PacketRange range;
+  range.start = static_cast<std::uint32_t>(out.size());
+  for (int pass = 0; pass < 2; ++pass) {
+    int lane = PACKET_LANES;
+    for (std::size_t i = 0; i < n; ++i) {
+      const ObjectGpu& ob = objects[ids[i]];
+      if (isPacketTriangle(ob) != (pass == 0)) continue;
+      if (lane == PACKET_LANES) {
+        out.push_back(emptyPacket());
+        lane = 0;
+      }
+      if (pass == 0)
+        putTriangle(out.back(), lane, ob, ids[i]);
+      else
+        out.back().prim[lane] = -(ids[i] + 2);
+      ++lane;
+    }
+  }
+  range.count = static_cast<std::uint32_t>(out.size() - range.start);
+  return range;
+}
+
+}  // namespace prism

@@ -1,0 +1,31 @@
+// Writes a leaf's primitives as TriPacketGpu packets (kernels/shared/tri_packet_gpu.h):
+// triangles first, four to a packet, then the other bounded primitives, which
+// the kernels test one by one through object_intersect.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "kernels/shared/object_gpu.h"
+#include "kernels/shared/tri_packet_gpu.h"
+
+namespace prism {
+
+struct PacketRange {
+  std::uint32_t start = 0;
+  std::uint32_t count = 0;
+};
+
+// Packets one leaf of these primitives needs.
+std::size_t leafPacketCount(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n);
+
+// Appends the leaf's packets to `out` and returns where they are.
+PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
+                              std::vector<TriPacketGpu>& out);
+
+// A packet-friendly triangle: stored in world space, intersected by the
+// vectorised Moller-Trumbore test.
+inline bool isPacketTriangle(const ObjectGpu& ob) { return ob.type == OBJECT_TRIANGLE && !ob.has_transform; }
+
+}  // namespace prism

@@ -1,0 +1,79 @@
+// Fork-join parallelism for the builders: a task goes to a new std::thread
+// while the build's thread budget (the cores given to it) has one free, and
+// runs inline otherwise. Recursive builders fork their big subtrees, so both
+// cores stay busy once the top of the tree is split.
+#pragma once
+
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+class ThreadBudget {
+ public:
+  // `threads` in all, the calling one included; 0 = hardware concurrency.
+  explicit ThreadBudget(int threads) {
+    if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+    m_total = threads < 1 ? 1 : threads;
+    m_free = m_total - 1;
+  }
+  int total() const { return m_total; }
+  bool tryAcquire() {
+    int free = m_free.load();
+    while (free > 0)
+      if (m_free.compare_exchange_weak(free, free - 1)) return true;
+    return false;
+  }
+  void release() { m_free.fetch_add(1); }
+
+ private:
+  int m_total = 1;
+  std::atomic<int> m_free{0};
+};
+
+class TaskGroup {
+ public:
+  explicit TaskGroup(ThreadBudget& budget) : m_budget(budget) {}
+  TaskGroup(const TaskGroup&) = delete;
+  TaskGroup& operator=(const TaskGroup&) = delete;
+  ~TaskGroup() {
+    for (std::thread& t : m_threads) t.join();
+  }
+
+  // Runs `task`, on its own thread when `big` and a thread is free.
+  template <typename F>
+  void run(F&& task, bool big) {
+    if (big && m_budget.tryAcquire()) {
+      m_threads.emplace_back([this, task = std::forward<F>(task)]() mutable {
+        try {
+          task();
+        } catch (...) {
+          std::lock_guard<std::mutex> lock(m_mutex);
+          if (!m_error) m_error = std::current_exception();
+        }
+        m_budget.release();
+      });
+    } else {
+      task();
+    }
+  }
+
+  // Joins every task; rethrows the first exception one of them threw.
+  void wait() {
+    for (std::thread& t : m_threads) t.join();
+    m_threads.clear();
+    if (m_error) std::rethrow_exception(std::exchange(m_error, nullptr));
+  }
+
+ private:
+  ThreadBudget& m_budget;
+  std::vector<std::thread> m_threads;
+  std::mutex m_mutex;
+  std::exception_ptr m_error;
+};
+
+}  // namespace prism

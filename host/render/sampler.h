@@ -1,0 +1,108 @@
+// Anti-aliasing on the host side: the names of the sampling modes and
+// reconstruction filters, their validation, the sample-count formula, the Poisson
+// tile generator, launch wrappers for kernels/supersample.cl and kernels/resolve.cl,
+// and the adaptive (three-step) sampler, which drives tracing through a callback so
+// it can run without the renderer. docs/sampling.md describes the modes.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "device/context.h"
+
+namespace prism {
+
+// Values match AA_MODE_* and FILTER_* in kernels/sampling/sample_modes.h.
+enum class AaMode { None, Grid, Quincunx, Adaptive, Jitter, Poisson, Random };
+enum class FilterKind { Box, Tent, Gaussian, Mitchell };
+
+// Parse a user's name ("jitter", "mitchell"); unknown names throw
+// std::invalid_argument listing the valid ones.
+AaMode parseAaMode(const std::string& name);
+FilterKind parseFilterKind(const std::string& name);
+const char* aaModeName(AaMode mode);
+const char* filterName(FilterKind kind);
+// "none, grid, quincunx, adaptive, jitter, poisson, random" and "box, tent, gaussian, mitchell".
+std::string aaModeNames();
+std::string filterNames();
+
+// Support radius in pixels: box 0.5, tent 1, gaussian 1.5, mitchell 2.
+double filterRadius(FilterKind kind);
+
+struct SamplingOptions {
+  AaMode mode = AaMode::None;
+  FilterKind filter = FilterKind::Box;  // quincunx always uses the tent; adaptive uses none
+  int spp = 1;                          // samples per pixel of the per-pixel modes
+  double adaptive_threshold = 0.1;      // max channel difference between a square's corners
+  int adaptive_max_level = 2;           // subdivisions of a pixel's side: up to 2^level squares per side
+
+  // Throws std::invalid_argument naming the option and the reason: spp out of
+  // 1..65536, a non-square spp for grid, spp other than 1 for none, quincunx and
+  // adaptive (they fix their own samples), poisson above kMaxPoissonSpp, a negative
+  // or non-finite threshold, a level outside 0..kMaxAdaptiveLevel.
+  void validate() const;
+  // The filter the resolve step applies (tent for quincunx).
+  FilterKind effectiveFilter() const { return mode == AaMode::Quincunx ? FilterKind::Tent : filter; }
+};
+
+constexpr int kMaxPoissonSpp = 4096;
+constexpr int kMaxAdaptiveLevel = 8;
+
+// Primary samples (rays) a width x height image takes: W*H for none, W*H*spp for
+// grid, jitter, poisson and random, (W+1)(H+1) + W*H for quincunx. Adaptive
+// sampling depends on the image: this returns its first pass, the (W+1)(H+1)
+// corners; AdaptiveResult::samples has the total.
+std::uint64_t sampleCount(AaMode mode, int width, int height, int spp);
+
+// N points on the unit torus [0,1)^2 at least `min_distance` apart (toroidal
+// distance, computed on the stored float coordinates, which are multiples of
+// 2^-24). Made by relaxation dart throwing (McCool and Fiume 1992: the radius
+// starts at the packing bound and shrinks by 2% after every 200 consecutive
+// misses), then maximin hill climbing (each point tries small moves away from its
+// nearest neighbour, which never lowers the minimum distance); best of 4 runs. The
+// work is bounded (well under a second at kMaxPoissonSpp) and the result is a
+// function of (n, seed) alone: about 0.94 of the packing bound at n = 4, 0.85 at
+// 256, 0.78 at 4096.
+struct PoissonTile {
+  std::vector<float> xy;     // 2 per point
+  double min_distance = 0;   // 1 (the period) when n == 1
+  double packing_bound = 0;  // sqrt(2 / (sqrt(3) n)): no n points can be farther apart
+};
+PoissonTile poissonTile(int n, std::uint64_t seed);
+
+// The 32-bit seed the kernels mix into sample positions (as flattenScene does).
+std::uint32_t kernelSeed(std::uint64_t seed);
+
+// Sample positions (2 floats a sample, film coordinates) of a whole width x height
+// image for a kernel-generated mode (not adaptive), and in `aov_pixel` (if given)
+// the pixel whose AOVs each sample writes, or -1.
+std::vector<float> samplePositions(Context& context, const SamplingOptions& options, int width, int height,
+                                   std::uint64_t seed, std::vector<std::int32_t>* aov_pixel = nullptr);
+
+// Pixels (rgba) from per-sample rgba radiance, numbered as samplePositions
+// numbers the samples, through options.effectiveFilter().
+std::vector<float> resolveSamples(Context& context, const SamplingOptions& options, int width, int height,
+                                  const std::vector<float>& sample_xy, const std::vector<float>& radiance);
+
+// Adaptive sampling. `trace` gets film positions (x, y pairs) and returns their
+// colours, the same number of channels (>= 1) for each point, points in order.
+using TraceFn = std::function<std::vector<float>(const std::vector<float>& xy)>;
+
+struct AdaptiveResult {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> pixels;                    // width*height*channels
+  std::vector<std::uint8_t> levels;             // per pixel: the deepest subdivision (0 = corners only)
+  std::uint64_t samples = 0;                    // points traced, each once however many pixels share it
+  std::vector<std::uint64_t> samples_per_pass;  // pass 0: the corners; pass l: the points level l added
+};
+
+// Three steps: trace every pixel corner (shared by neighbours); subdivide each
+// square whose four corners differ by more than `threshold` in some channel, level
+// by level down to `max_level`, tracing the new points of a level in one call (a
+// dyadic grid, so a point shared by squares or pixels is traced once); then each
+// pixel is the area-weighted mean of its leaf squares' corner averages.
+AdaptiveResult adaptiveSample(int width, int height, double threshold, int max_level, const TraceFn& trace);
+
+}  // namespace prism

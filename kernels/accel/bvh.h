@@ -1,0 +1,154 @@
+/* 8-wide BVH traversal (host/accel/bvh_builder.cpp builds it). Per ray, the
+ * near and far slab of each axis is chosen once by the sign of the direction,
+ * a node's eight boxes are tested with float8 arithmetic into a hit mask, and
+ * the children hit are visited nearest first: one goes on directly, the others
+ * wait on a stack sorted by entry distance (PERF-NOTES' best strict variant).
+ * Any-hit queries skip the sorting. */
+#ifndef PRISM_ACCEL_BVH_H
+#define PRISM_ACCEL_BVH_H
+
+#include "accel/leaf_packets.h"
+#include "shared/bvh_node_gpu.h"
+
+typedef struct BvhRay {
+  float8 ox, oy, oz, ix, iy, iz;
+  int nx, ny, nz; /* float8 index of the near slab per axis; far is index ^ 1 */
+} BvhRay;
+
+inline BvhRay bvh_ray(float3 o, float3 d) {
+  float3 inv = accel_safe_rcp(d);
+  BvhRay r;
+  r.ox = (float8)(o.x);
+  r.oy = (float8)(o.y);
+  r.oz = (float8)(o.z);
+  r.ix = (float8)(inv.x);
+  r.iy = (float8)(inv.y);
+  r.iz = (float8)(inv.z);
+  r.nx = inv.x >= 0.0f ? 0 : 1;
+  r.ny = inv.y >= 0.0f ? 2 : 3;
+  r.nz = inv.z >= 0.0f ? 4 : 5;
+  return r;
+}
+
+/* Bit i set when the ray meets child i's box within [tmin, tlimit]; entry
+ * distances in *tn. The limit is scaled with the far distances: a primitive
+ * whose t ties the best hit to the last bits (a vertex shared by several
+ * triangles at a box corner) must still be reached. */
+inline int bvh_node_mask(__global const float8* n, const BvhRay* r, float tmin, float tlimit, float8* tn) {
+  float8 nx = (n[r->nx] - r->ox) * r->ix;
+  float8 ny = (n[r->ny] - r->oy) * r->iy;
+  float8 nz = (n[r->nz] - r->oz) * r->iz;
+  float8 fx = (n[r->nx ^ 1] - r->ox) * r->ix;
+  float8 fy = (n[r->ny ^ 1] - r->oy) * r->iy;
+  float8 fz = (n[r->nz ^ 1] - r->oz) * r->iz;
+  float8 near_t = fmax(fmax(nx, ny), fmax(nz, (float8)(tmin)));
+  float8 far_t = fmin(fmin(fmin(fx, fy), fz), (float8)(tlimit)) * ACCEL_FAR_SCALE;
+  int8 hit = near_t <= far_t;
+  int8 bits = hit & (int8)(1, 2, 4, 8, 16, 32, 64, 128);
+  int4 b4 = bits.lo | bits.hi;
+  int2 b2 = b4.lo | b4.hi;
+  *tn = near_t;
+  return b2.x | b2.y;
+}
+
+inline void bvh_leaf_range(int code, int* start, int* count) {
+  int x = ~code;
+  *start = x >> BVH_LEAF_COUNT_BITS;
+  *count = (x & (BVH_LEAF_MAX_PACKETS - 1)) + 1;
+}
+
+inline bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
+  accel_miss(hit);
+  float best = tmax;
+  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, tmin, &best, hit);
+  BvhRay r = bvh_ray(o, d);
+  PacketRay pr = packet_ray(o, d);
+  __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
+  int stack_code[PRISM_ACCEL_STACK];
+  float stack_t[PRISM_ACCEL_STACK];
+  int sp = 0;
+  int code = 0; /* the root */
+  for (;;) {
+    if (code >= 0) {
+      __global const float8* n = nodes + 7 * code;
+      float8 tn;
+      int mask = bvh_node_mask(n, &r, tmin, best, &tn);
+      if (mask) {
+        __global const int* child = (__global const int*)(n + 6);
+        int i = accel_ctz(mask);
+        mask &= mask - 1;
+        if (!mask) {
+          code = child[i];
+          continue;
+        }
+        /* Several children: all onto the stack, sorted so the nearest is on
+         * top, then continue with it. */
+        float tna[8];
+        vstore8(tn, 0, tna);
+        int base = sp;
+        for (;;) {
+          float t = tna[i];
+          int j = sp++;
+          while (j > base && stack_t[j - 1] < t) {
+            stack_t[j] = stack_t[j - 1];
+            stack_code[j] = stack_code[j - 1];
+            --j;
+          }
+          stack_t[j] = t;
+          stack_code[j] = child[i];
+          if (!mask) break;
+          i = accel_ctz(mask);
+          mask &= mask - 1;
+        }
+        code = stack_code[--sp];
+        continue;
+      }
+    } else {
+      int start, count;
+      bvh_leaf_range(code, &start, &count);
+      for (int p = 0; p < count; ++p) packet_closest(accel_packets + start + p, &pr, o, d, tmin, &best, hit, objects);
+    }
+    while (sp > 0 && stack_t[sp - 1] > best * ACCEL_FAR_SCALE) --sp;
+    if (sp == 0) break;
+    code = stack_code[--sp];
+  }
+  return hit->prim >= 0;
+}
+
+inline float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
+                                 float tmax) {
+  float carried =
+      unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
+  if (carried == 0.0f) return 0.0f;
+  BvhRay r = bvh_ray(o, d);
+  PacketRay pr = packet_ray(o, d);
+  __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
+  int stack[PRISM_ACCEL_STACK];
+  int sp = 0;
+  int code = 0;
+  for (;;) {
+    if (code >= 0) {
+      __global const float8* n = nodes + 7 * code;
+      float8 tn;
+      int mask = bvh_node_mask(n, &r, tmin, tmax, &tn);
+      __global const int* child = (__global const int*)(n + 6);
+      while (mask) {
+        stack[sp++] = child[accel_ctz(mask)];
+        mask &= mask - 1;
+      }
+    } else {
+      int start, count;
+      bvh_leaf_range(code, &start, &count);
+      for (int p = 0; p < count; ++p) {
+        carried = packet_transmittance(accel_packets + start + p, &pr, o, d, tmin, tmax, carried, 0.0f, 0.0f, 0,
+                                       objects, materials);
+        if (carried == 0.0f) return 0.0f;
+      }
+    }
+    if (sp == 0) break;
+    code = stack[--sp];
+  }
+  return carried;
+}
+
+#endif

@@ -1,0 +1,239 @@
+/* What every tree's traversal shares: the 4-wide leaf packet tests (closest
+ * hit and transmittance), the brute-force list of unbounded primitives
+ * (planes), the hit acceptance rule and the mailbox that counts a primitive
+ * referenced by several cells once.
+ *
+ * Hit rule, the same in every structure: the nearest t wins and an exact tie
+ * goes to the lower primitive id. `none` scans in id order with a strict
+ * t < best, which picks the same one, so all four answer alike.
+ * The packet test is triangle_intersect (geometry/triangle.h) written for
+ * four triangles at once, operation for operation (no contraction, see
+ * common/math.h), so it returns the same t, u and v bits. */
+#ifndef PRISM_ACCEL_LEAF_PACKETS_H
+#define PRISM_ACCEL_LEAF_PACKETS_H
+
+#include "geometry/object.h"
+#include "shared/material_gpu.h"
+#include "shared/tri_packet_gpu.h"
+
+/* Ize, "Robust BVH ray traversal" (JCGT 2013): a far distance scaled by
+ * 1 + 2 gamma(3) keeps float slab tests conservative. */
+#define ACCEL_FAR_SCALE 1.0000004f
+/* Relative slack on cell intervals of the spatial subdivisions, so rounding
+ * never skips a cell a ray grazes. */
+#define ACCEL_CELL_EPS 1e-6f
+
+/* In the spatial subdivisions, the closest hit is final once it lies before
+ * the exit t1 of the cell searched, and cells entered after `best` need no
+ * search; both with the same slack, since a primitive in a later cell may hit
+ * a few ulps before that cell's computed entry. */
+inline bool accel_before(float best, float t) { return best < t - ACCEL_CELL_EPS * fabs(t); }
+
+/* 1/d without infinities: a zero component becomes a tiny one of the same
+ * sign, so (plane - o) * inv is never 0 * inf = NaN. */
+inline float3 accel_safe_rcp(float3 d) {
+  const float tiny = 1e-30f;
+  float3 s = (float3)(fabs(d.x) < tiny ? copysign(tiny, d.x) : d.x, fabs(d.y) < tiny ? copysign(tiny, d.y) : d.y,
+                      fabs(d.z) < tiny ? copysign(tiny, d.z) : d.z);
+  return 1.0f / s;
+}
+
+inline int accel_ctz(int x) { return 31 - clz(x & -x); }
+
+typedef struct PacketRay {
+  float4 ox, oy, oz, dx, dy, dz;
+} PacketRay;
+
+inline PacketRay packet_ray(float3 o, float3 d) {
+  PacketRay r;
+  r.ox = (float4)(o.x);
+  r.oy = (float4)(o.y);
+  r.oz = (float4)(o.z);
+  r.dx = (float4)(d.x);
+  r.dy = (float4)(d.y);
+  r.dz = (float4)(d.z);
+  return r;
+}
+
+inline void accel_miss(HitGpu* hit) {
+  hit->t = PRISM_INF;
+  hit->prim = -1;
+  hit->u = 0.0f;
+  hit->v = 0.0f;
+}
+
+inline void accel_accept(float t, float u, float v, int prim, float* best, HitGpu* hit) {
+  if (t < *best || (t == *best && hit->prim >= 0 && prim < hit->prim)) {
+    *best = t;
+    hit->t = t;
+    hit->prim = prim;
+    hit->u = u;
+    hit->v = v;
+  }
+}
+
+/* Moller-Trumbore on four triangles: t, u, v and a lane mask of hits in
+ * (tmin, tlimit] (or (tmin, tlimit) when `closed` is 0). */
+inline int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay* r, float tmin, float tlimit, int closed,
+                             float4* t_out, float4* u_out, float4* v_out) {
+  __global const float4* q = (__global const float4*)pk;
+  float4 e1x = q[3], e1y = q[4], e1z = q[5];
+  float4 e2x = q[6], e2y = q[7], e2z = q[8];
+  float4 pvx = r->dy * e2z - r->dz * e2y;
+  float4 pvy = r->dz * e2x - r->dx * e2z;
+  float4 pvz = r->dx * e2y - r->dy * e2x;
+  float4 det = e1x * pvx + e1y * pvy + e1z * pvz;
+  float4 inv_det = 1.0f / det;
+  float4 tvx = r->ox - q[0], tvy = r->oy - q[1], tvz = r->oz - q[2];
+  float4 u = (tvx * pvx + tvy * pvy + tvz * pvz) * inv_det;
+  float4 qvx = tvy * e1z - tvz * e1y;
+  float4 qvy = tvz * e1x - tvx * e1z;
+  float4 qvz = tvx * e1y - tvy * e1x;
+  float4 v = (r->dx * qvx + r->dy * qvy + r->dz * qvz) * inv_det;
+  float4 t = (e2x * qvx + e2y * qvy + e2z * qvz) * inv_det;
+  int4 reject = (det == 0.0f) | (u < 0.0f) | (u > 1.0f) | (v < 0.0f) | (u + v > 1.0f);
+  int4 in_range = (t > tmin) & (closed ? (t <= tlimit) : (t < tlimit));
+  *t_out = t;
+  *u_out = u;
+  *v_out = v;
+  return ~reject & in_range;
+}
+
+inline void packet_closest(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
+                           float* best, HitGpu* hit, __global const ObjectGpu* objects) {
+  float4 t, u, v;
+  int4 ok = packet_intersect(pk, r, tmin, *best, 1, &t, &u, &v);
+  int4 prim = vload4(0, pk->prim);
+  if (any(ok)) {
+    float ta[4], ua[4], va[4];
+    int oka[4], pa[4];
+    vstore4(t, 0, ta);
+    vstore4(u, 0, ua);
+    vstore4(v, 0, va);
+    vstore4(ok, 0, oka);
+    vstore4(prim, 0, pa);
+    for (int k = 0; k < 4; ++k)
+      if (oka[k]) accel_accept(ta[k], ua[k], va[k], pa[k], best, hit);
+  }
+  if (any(prim < -1)) {
+    for (int k = 0; k < 4; ++k) {
+      int id = -pk->prim[k] - 2;
+      if (id < 0) continue;
+      float tt, uu, vv;
+      /* nextafter: an exact tie must reach accel_accept */
+      if (object_intersect(&objects[id], o, d, tmin, nextafter(*best, PRISM_INF), &tt, &uu, &vv))
+        accel_accept(tt, uu, vv, id, best, hit);
+    }
+  }
+}
+
+/* k_trans of a primitive; NULL materials (plain occlusion queries): opaque. */
+inline float accel_transmit(__global const MaterialGpu* materials, __global const ObjectGpu* objects, int prim) {
+  return materials ? materials[objects[prim].material].transmit : 0.0f;
+}
+
+/* Primitives already multiplied into a shadow ray in the spatial
+ * subdivisions, where one primitive sits in several cells. A hit counts in the
+ * cell whose (slightly widened) interval holds its t, and the mailbox keeps a
+ * hit on a shared cell boundary from counting in both cells. */
+#define MAILBOX_SIZE 8
+typedef struct Mailbox {
+  int ids[MAILBOX_SIZE];
+  int next;
+} Mailbox;
+
+inline void mailbox_init(Mailbox* m) {
+  for (int i = 0; i < MAILBOX_SIZE; ++i) m->ids[i] = -1;
+  m->next = 0;
+}
+
+/* True the first time `prim` is offered. */
+inline bool mailbox_first(Mailbox* m, int prim) {
+  for (int i = 0; i < MAILBOX_SIZE; ++i)
+    if (m->ids[i] == prim) return false;
+  m->ids[m->next] = prim;
+  m->next = (m->next + 1) % MAILBOX_SIZE;
+  return true;
+}
+
+/* `carried` after a hit at t on prim; cell interval and mailbox only for the
+ * spatial subdivisions (mailbox NULL: every hit counts, as in the BVH). */
+inline float accel_count_hit(float carried, int prim, float t, float cell_lo, float cell_hi, Mailbox* mailbox,
+                             __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
+  float k = accel_transmit(materials, objects, prim);
+  if (k == 0.0f) return 0.0f; /* opaque: blocked wherever it is */
+  if (mailbox) {
+    if (t < cell_lo || t > cell_hi) return carried;
+    if (!mailbox_first(mailbox, prim)) return carried;
+  }
+  return carried * k;
+}
+
+inline float packet_transmittance(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
+                                  float tmax, float carried, float cell_lo, float cell_hi, Mailbox* mailbox,
+                                  __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
+  float4 t, u, v;
+  int4 ok = packet_intersect(pk, r, tmin, tmax, 0, &t, &u, &v);
+  int4 prim = vload4(0, pk->prim);
+  if (any(ok)) {
+    float ta[4];
+    int oka[4], pa[4];
+    vstore4(t, 0, ta);
+    vstore4(ok, 0, oka);
+    vstore4(prim, 0, pa);
+    for (int k = 0; k < 4; ++k) {
+      if (!oka[k]) continue;
+      carried = accel_count_hit(carried, pa[k], ta[k], cell_lo, cell_hi, mailbox, objects, materials);
+      if (carried == 0.0f) return 0.0f;
+    }
+  }
+  if (any(prim < -1)) {
+    for (int k = 0; k < 4; ++k) {
+      int id = -pk->prim[k] - 2;
+      if (id < 0) continue;
+      float tt, uu, vv;
+      if (object_intersect(&objects[id], o, d, tmin, tmax, &tt, &uu, &vv)) {
+        carried = accel_count_hit(carried, id, tt, cell_lo, cell_hi, mailbox, objects, materials);
+        if (carried == 0.0f) return 0.0f;
+      }
+    }
+  }
+  return carried;
+}
+
+/* Planes and other unbounded primitives: tested by every ray. */
+inline void unbounded_closest(__global const ObjectGpu* objects, __global const int* list, int count, float3 o,
+                              float3 d, float tmin, float* best, HitGpu* hit) {
+  for (int i = 0; i < count; ++i) {
+    int id = list[i];
+    float t, u, v;
+    if (object_intersect(&objects[id], o, d, tmin, nextafter(*best, PRISM_INF), &t, &u, &v))
+      accel_accept(t, u, v, id, best, hit);
+  }
+}
+
+inline float unbounded_transmittance(__global const ObjectGpu* objects, __global const MaterialGpu* materials,
+                                     __global const int* list, int count, float3 o, float3 d, float tmin, float tmax) {
+  float carried = 1.0f;
+  for (int i = 0; i < count && carried > 0.0f; ++i) {
+    int id = list[i];
+    float t, u, v;
+    if (object_intersect(&objects[id], o, d, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, objects, id);
+  }
+  return carried;
+}
+
+/* Entry and exit of the ray in the box at accel_nodes[0..1]: false if it misses. */
+inline bool accel_clip_scene(__global const float4* header, float3 o, float3 inv, float tmin, float tmax, float* t0,
+                             float* t1) {
+  float3 lo = header[0].xyz, hi = header[1].xyz;
+  float3 a = (lo - o) * inv, b = (hi - o) * inv;
+  float3 n = fmin(a, b), f = fmax(a, b);
+  float tn = fmax(fmax(n.x, n.y), fmax(n.z, tmin));
+  float tf = fmin(fmin(fmin(f.x, f.y), f.z), tmax) * ACCEL_FAR_SCALE;
+  *t0 = tn;
+  *t1 = tf;
+  return tn <= tf;
+}
+
+#endif

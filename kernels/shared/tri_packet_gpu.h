@@ -1,0 +1,24 @@
+/* Four primitives of one leaf, stored so a ray meets all four triangles at once
+ * with float4 arithmetic (PERF-NOTES: 4-wide leaves). Shared by host and kernels;
+ * every acceleration structure's leaves are ranges of these packets.
+ *   Lanes are structure-of-arrays: lane k of v0x..e2z is triangle k, with
+ *   e1 = v1 - v0 and e2 = v2 - v0 rounded to float exactly as the kernel's
+ *   scalar triangle_intersect computes them, so both give the same t, u, v.
+ *   prim[k] >= 0: a triangle, its index in the object array (the primid);
+ *   prim[k] == PACKET_EMPTY: an unused lane (zero geometry, never hit);
+ *   prim[k] <= -2: object -(prim[k] + 2), a sphere, box or transformed object
+ *   tested through object_intersect (its lane geometry is zero). */
+#ifndef PRISM_TRI_PACKET_GPU_H
+#define PRISM_TRI_PACKET_GPU_H
+
+#define PACKET_EMPTY (-1)
+#define PACKET_LANES 4
+
+typedef struct TriPacketGpu {
+  float v0x[4], v0y[4], v0z[4];
+  float e1x[4], e1y[4], e1z[4];
+  float e2x[4], e2y[4], e2z[4];
+  int prim[4];
+} TriPacketGpu;
+
+#endif

@@ -1,0 +1,239 @@
+// The four structures (bvh, octree, bsp and brute-force none) give the same
+// answers on the same rays: the same closest primitive with bit-identical t,
+// u and v (up to exact ties in t), the same occlusion, and the same
+// transmittance through semitransparent primitives. Over a scene with every
+// primitive kind, procedural meshes and the shared meshes, with camera rays,
+// random rays, shadow rays and rays aimed at vertices and edges.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <sstream>
+
+#include "accel/accel_scenes.h"
+#include "render/ray_queries.h"
+#include "support/shared_context.h"
+
+using namespace prism;
+using namespace prism::test;
+
+namespace {
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Rays through vertices and edge midpoints of the scene's triangles, from
+// random points around: they meet several triangles at exactly the same t.
+std::vector<QueryRay> vertexRays(const std::vector<ObjectGpu>& objects, std::size_t count, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<std::size_t> tris;
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    if (objects[i].type == OBJECT_TRIANGLE) tris.push_back(i);
+  std::vector<QueryRay> rays;
+  if (tris.empty()) return rays;
+  Aabb box = boundsOf(objects);
+  std::uniform_real_distribution<float> u01(0, 1);
+  for (std::size_t k = 0; k < count; ++k) {
+    const float* p = objects[tris[rng() % tris.size()]].p;
+    int v = static_cast<int>(rng() % 3), w = (v + 1) % 3;
+    bool edge = rng() % 2;
+    float target[3];
+    for (int a = 0; a < 3; ++a) target[a] = edge ? 0.5f * (p[3 * v + a] + p[3 * w + a]) : p[3 * v + a];
+    float o[3];
+    for (int a = 0; a < 3; ++a) o[a] = box.lo[a] - 0.5f * (box.hi[a] - box.lo[a]) + 2 * (box.hi[a] - box.lo[a]) * u01(rng);
+    rays.push_back(QueryRay{o[0], o[1], o[2], 0, target[0] - o[0], target[1] - o[1], target[2] - o[2], INFINITY});
+  }
+  return rays;
+}
+
+// Whether float arithmetic may decide this ray/primitive pair either way: the
+// ray meets the triangle (in double) within a relative 1e-5 of an edge, or
+// nearly parallel to it. Only triangles are judged; anything else is never
+// "too close to call".
+bool ambiguous(const QueryRay& r, const ObjectGpu& ob) {
+  if (ob.type != OBJECT_TRIANGLE) return false;
+  const float* p = ob.p;
+  double v0[3] = {p[0], p[1], p[2]}, e1[3], e2[3], d[3] = {r.dx, r.dy, r.dz}, o[3] = {r.ox, r.oy, r.oz};
+  for (int a = 0; a < 3; ++a) {
+    e1[a] = double(p[3 + a]) - v0[a];
+    e2[a] = double(p[6 + a]) - v0[a];
+  }
+  auto cross = [](const double* x, const double* y, double* z) {
+    z[0] = x[1] * y[2] - x[2] * y[1];
+    z[1] = x[2] * y[0] - x[0] * y[2];
+    z[2] = x[0] * y[1] - x[1] * y[0];
+  };
+  auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  double n[3], pv[3], tv[3], qv[3];
+  cross(e1, e2, n);
+  double nl = std::sqrt(dot(n, n)), dl = std::sqrt(dot(d, d));
+  if (!(nl > 0) || std::fabs(dot(n, d)) < 1e-4 * nl * dl) return true;  // degenerate or grazing
+  cross(d, e2, pv);
+  double det = dot(e1, pv);
+  for (int a = 0; a < 3; ++a) tv[a] = o[a] - v0[a];
+  double u = dot(tv, pv) / det;
+  cross(tv, e1, qv);
+  double v = dot(d, qv) / det;
+  double margin = std::min({u, v, 1 - u - v});
+  return std::fabs(margin) < 1e-5;
+}
+
+struct Comparison {
+  std::size_t rays = 0, hits = 0, ties = 0, ambiguous = 0, mismatches = 0;
+  std::string first;
+};
+
+// `got` against `ref`: identical hits (prim, and t, u, v to the bit), exact
+// ties in t, and pairs float cannot call (ambiguous above); anything else is a
+// mismatch.
+Comparison compareHits(const std::vector<ObjectGpu>& objects, const std::vector<QueryRay>& rays,
+                       const std::vector<HitGpu>& ref, const std::vector<HitGpu>& got) {
+  Comparison c;
+  c.rays = rays.size();
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const HitGpu& a = ref[i];
+    const HitGpu& b = got[i];
+    if (a.prim >= 0) ++c.hits;
+    bool same = a.prim == b.prim && (a.prim < 0 || (sameBits(a.t, b.t) && sameBits(a.u, b.u) && sameBits(a.v, b.v)));
+    if (same) continue;
+    if (a.prim >= 0 && b.prim >= 0 && a.t == b.t) {
+      ++c.ties;
+      continue;
+    }
+    if ((a.prim >= 0 && ambiguous(rays[i], objects[a.prim])) || (b.prim >= 0 && ambiguous(rays[i], objects[b.prim]))) {
+      ++c.ambiguous;
+      continue;
+    }
+    if (c.mismatches++ == 0) {
+      std::ostringstream os;
+      const QueryRay& r = rays[i];
+      os.precision(9);
+      os << "ray " << i << " o=(" << r.ox << "," << r.oy << "," << r.oz << ") d=(" << r.dx << "," << r.dy << ","
+         << r.dz << ") [" << r.tmin << "," << r.tmax << "]: expected prim " << a.prim << " t " << a.t << ", got prim "
+         << b.prim << " t " << b.t;
+      c.first = os.str();
+    }
+  }
+  return c;
+}
+
+template <typename T>
+std::vector<T> everyNth(const std::vector<T>& v, std::size_t n) {
+  std::vector<T> out;
+  for (std::size_t i = 0; i < v.size(); i += n) out.push_back(v[i]);
+  return out;
+}
+
+void checkHits(const AccelScene& scene, const char* what, const std::vector<QueryRay>& rays,
+               const std::vector<HitGpu>& ref, const std::vector<HitGpu>& got) {
+  Comparison c = compareHits(scene.objects, rays, ref, got);
+  INFO(what << ": " << c.rays << " rays, " << c.hits << " hits, " << c.ties << " exact ties, " << c.ambiguous
+            << " too close to call; first mismatch: " << c.first);
+  CHECK(c.mismatches == 0);
+  CHECK(c.ambiguous <= c.rays / 1000 + 2);
+}
+
+// Near-edge shadow rays may be called either way too: only clear
+// disagreements count, and at most 0.1% may be unclear.
+void checkOcclusion(const char* what, const std::vector<std::uint8_t>& ref, const std::vector<std::uint8_t>& got) {
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) differ += ref[i] != got[i];
+  INFO(what << ": " << differ << " of " << ref.size() << " occlusion answers differ");
+  CHECK(differ <= ref.size() / 1000 + 2);
+}
+
+void checkCarried(const char* what, const std::vector<float>& ref, const std::vector<float>& got) {
+  // Products of the same factors in another order: equal to rounding.
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) differ += std::fabs(got[i] - ref[i]) > 1e-6f * std::max(1.0f, ref[i]);
+  INFO(what << ": " << differ << " of " << ref.size() << " transmittances differ");
+  CHECK(differ <= ref.size() / 1000 + 2);
+}
+
+// `none` answers a sample of about `none_rays` rays (it is O(primitives) per
+// ray); the BVH answers all of them and the octree and BSP are compared with it.
+void checkScene(const AccelScene& scene, std::size_t random_count, int camera_size, std::size_t none_rays) {
+  Context& context = sharedContext();
+  const Aabb box = boundsOf(scene.objects);
+  std::vector<QueryRay> rays = cameraRays(box, camera_size, camera_size);
+  std::vector<QueryRay> random = randomRays(box, random_count, 99);
+  std::vector<QueryRay> aimed = vertexRays(scene.objects, random_count / 4, 5);
+  rays.insert(rays.end(), random.begin(), random.end());
+  rays.insert(rays.end(), aimed.begin(), aimed.end());
+
+  RayQueryEngine bvh(context, scene.objects, AccelKind::Bvh, scene.materials);
+  const std::vector<HitGpu> bvh_hits = bvh.intersect(rays);
+  const float light[3] = {box.hi[0] + 1, box.hi[1] + 2, box.hi[2] + 1.5f};
+  std::vector<QueryRay> shadows = shadowRays(rays, bvh_hits, light);
+  std::vector<QueryRay> segments = randomRays(box, random_count, 123);  // many end inside the scene
+  for (QueryRay& s : segments) s.tmax = 0.5f * (box.hi[0] - box.lo[0]);
+  shadows.insert(shadows.end(), segments.begin(), segments.end());
+  const std::vector<RayGpu> shadow_rays = toRayGpu(shadows);
+  const std::vector<std::uint8_t> bvh_occluded = bvh.occluded(shadows);
+  const std::vector<float> bvh_carried = bvh.transmittance(shadow_rays);
+
+  std::size_t blocked = 0;
+  for (std::uint8_t o : bvh_occluded) blocked += o;
+  INFO(scene.name << ": " << rays.size() << " rays, " << shadows.size() << " shadow rays, " << blocked
+                  << " occluded");
+  CHECK(blocked > 0);
+  CHECK(blocked < shadows.size());
+
+  {
+    RayQueryEngine none(context, scene.objects, AccelKind::None, scene.materials);
+    const std::size_t step = std::max<std::size_t>(1, rays.size() / std::max<std::size_t>(none_rays, 1));
+    std::vector<QueryRay> sample = everyNth(rays, step);
+    std::vector<QueryRay> shadow_sample = everyNth(shadows, step);
+    INFO(describeAccel(bvh.accel()));
+    checkHits(scene, "bvh against none", sample, none.intersect(sample), everyNth(bvh_hits, step));
+    checkOcclusion("bvh against none", none.occluded(shadow_sample), everyNth(bvh_occluded, step));
+    checkCarried("bvh against none", none.transmittance(toRayGpu(shadow_sample)), everyNth(bvh_carried, step));
+  }
+  for (AccelKind kind : {AccelKind::Octree, AccelKind::Bsp}) {
+    RayQueryEngine engine(context, scene.objects, kind, scene.materials);
+    INFO(describeAccel(engine.accel()));
+    checkHits(scene, "against bvh", rays, bvh_hits, engine.intersect(rays));
+    checkOcclusion("against bvh", bvh_occluded, engine.occluded(shadows));
+    checkCarried("against bvh", bvh_carried, engine.transmittance(shadow_rays));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("all structures agree on a scene of every primitive kind", "[accel]") {
+  checkScene(mixedScene(), 20000, 96, 100000);
+}
+
+TEST_CASE("all structures agree on procedural meshes", "[accel]") {
+  checkScene(meshScene("icosphere5", icosphere(5, 0, 0, 0, 1)), 20000, 96, 10000);
+  checkScene(meshScene("soup20k", triangleSoup(20000, 3, 0.02f)), 20000, 96, 3000);
+}
+
+TEST_CASE("all structures agree on the shared meshes", "[accel]") {
+  for (const char* file : {"bunny/bun_zipper_res2.ply", "teapot/teapot.obj", "cornell_box/CornellBox-Original.obj",
+                           "dragon/dragon_vcg_43k.ply"}) {
+    SharedMesh mesh = loadSharedMesh(file);
+    checkScene(meshScene(file, *mesh), 20000, 128, 3000);
+  }
+}
+
+TEST_CASE("the structures answer empty scenes, planes only, and a single primitive", "[accel]") {
+  AccelScene empty{"empty", {}, {}};
+  AccelScene planes = mixedScene(0);
+  planes.name = "planes only";
+  planes.objects.erase(std::remove_if(planes.objects.begin(), planes.objects.end(),
+                                      [](const ObjectGpu& o) { return o.type != OBJECT_PLANE; }),
+                       planes.objects.end());
+  AccelScene one = meshScene("one triangle", triangleSoup(1, 1, 0.3f));
+  for (const AccelScene* s : {&empty, &planes, &one}) {
+    std::vector<QueryRay> rays = randomRays(Aabb{{-1, -1, -1}, {2, 2, 2}}, 2000, 4);
+    RayQueryEngine none(sharedContext(), s->objects, AccelKind::None);
+    std::vector<HitGpu> ref = none.intersect(rays);
+    for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+      RayQueryEngine engine(sharedContext(), s->objects, kind);
+      INFO(s->name << " " << accelName(kind));
+      checkHits(*s, accelName(kind), rays, ref, engine.intersect(rays));
+    }
+  }
+}

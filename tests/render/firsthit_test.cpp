@@ -1,0 +1,359 @@
+// The first-hit (Z-buffer) pass against traced primary rays (render/ray_queries.h,
+// brute force over the scene) at random sample positions and at every pixel
+// corner: scenes of triangles, transformed spheres and boxes and a plane, a camera
+// inside the scene, a real mesh from the shared data, and a million-triangle grid
+// whose answer is known in closed form.
+#include "render/firsthit.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "kernels/shared/ray_gpu.h"
+#include "render/gpu_scene.h"
+#include "render/ray_queries.h"
+#include "render/sampler.h"
+#include "support/shared_context.h"
+
+using namespace prism;
+using namespace prism::test;
+
+namespace {
+
+// The primary rays of sample positions, through the same camera arithmetic the
+// firsthit kernel uses, so the two passes are handed the same rays.
+const char* kRayProbe = R"(
+#include "sampling/camera_ray.h"
+#include "shading/ray_io.h"
+__kernel void camera_rays(__global const CameraGpu* camera, __global const float* xy, int count,
+                          __global RayGpu* rays) {
+  int k = get_global_id(0);
+  if (k >= count) return;
+  float3 d = camera_ray_dir(camera, xy[2 * k], xy[2 * k + 1]);
+  rays[k] = ray_make(load3g(camera->origin), d, 0.0f, INFINITY, (float3)(1.0f), k, 0, RAY_KIND_PRIMARY, 0);
+}
+)";
+
+std::vector<RayGpu> cameraRays(const CameraGpu& camera, const std::vector<float>& xy) {
+  Context& ctx = sharedContext();
+  const size_t n = xy.size() / 2;
+  Buffer cam(ctx, sizeof(CameraGpu)), pos(ctx, xy.size() * sizeof(float)), rays(ctx, n * sizeof(RayGpu));
+  cam.write(&camera, sizeof(CameraGpu));
+  pos.writeVector(xy);
+  ctx.launch(ctx.kernelFromText(kRayProbe, "camera_rays.cl", "camera_rays"))
+      .arg(cam)
+      .arg(pos)
+      .arg(static_cast<cl_int>(n))
+      .arg(rays)
+      .run(n);
+  return rays.readVector<RayGpu>(n);
+}
+
+struct TestRng {
+  std::uint64_t s;
+  double next() {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(s >> 11) * (1.0 / 9007199254740992.0);
+  }
+  double in(double lo, double hi) { return lo + (hi - lo) * next(); }
+  Vec3 vec(double lo, double hi) { return {in(lo, hi), in(lo, hi), in(lo, hi)}; }
+};
+
+Scene emptyScene(const Vec3& eye, const Vec3& at, double fov, int width, int height) {
+  Scene s;
+  s.materials.push_back(defaultMaterial());
+  s.camera.position = eye;
+  s.camera.look_at = at;
+  s.camera.fov = fov;
+  s.film.width = width;
+  s.film.height = height;
+  return s;
+}
+
+Object triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  Object o;
+  o.type = ObjectType::Triangle;
+  o.vertices[0] = a;
+  o.vertices[1] = b;
+  o.vertices[2] = c;
+  return o;
+}
+
+Object sphere(const Vec3& c, double r, const Transform& t = Transform::identity()) {
+  Object o;
+  o.type = ObjectType::Sphere;
+  o.center = c;
+  o.radius = r;
+  o.transform = t;
+  return o;
+}
+
+Object box(const Vec3& lo, const Vec3& hi, const Transform& t = Transform::identity()) {
+  Object o;
+  o.type = ObjectType::Box;
+  o.box_min = lo;
+  o.box_max = hi;
+  o.transform = t;
+  return o;
+}
+
+Object plane(const Vec3& p, const Vec3& n) {
+  Object o;
+  o.type = ObjectType::Plane;
+  o.point = p;
+  o.normal = n;
+  return o;
+}
+
+// Random positions over the film plus every pixel corner (the film's edges included).
+std::vector<float> samplePoints(int width, int height, int spp, std::uint64_t seed) {
+  SamplingOptions random;
+  random.mode = AaMode::Random;
+  random.spp = spp;
+  std::vector<float> xy = samplePositions(sharedContext(), random, width, height, seed);
+  for (int j = 0; j <= height; ++j)
+    for (int i = 0; i <= width; ++i) {
+      xy.push_back(static_cast<float>(i));
+      xy.push_back(static_cast<float>(j));
+    }
+  return xy;
+}
+
+struct Agreement {
+  size_t samples = 0, same_prim = 0, hits = 0, depth_off = 0;
+  double worst_depth = 0;
+};
+
+// firstHits against traceClosest on the same rays.
+Agreement compare(const Scene& scene, const std::vector<float>& xy, int tile_size = 0) {
+  RenderOptions options = RenderOptions::fromScene(scene);
+  GpuScene gpu = flattenScene(scene, options);
+  std::vector<HitGpu> z = firstHits(sharedContext(), gpu, xy, tile_size);
+  std::vector<HitGpu> traced = traceClosest(sharedContext(), scene, cameraRays(gpu.camera, xy));
+  Agreement a;
+  a.samples = z.size();
+  for (size_t k = 0; k < z.size(); ++k) {
+    if (z[k].prim != traced[k].prim) continue;
+    ++a.same_prim;
+    if (z[k].prim < 0) continue;
+    ++a.hits;
+    double rel = std::fabs(static_cast<double>(z[k].t) - traced[k].t) / traced[k].t;
+    a.worst_depth = std::max(a.worst_depth, rel);
+    if (rel > 1e-5) ++a.depth_off;
+  }
+  return a;
+}
+
+void checkAgreement(const Agreement& a) {
+  INFO(a.samples << " samples, " << a.same_prim << " with the same primid, " << a.hits << " hits, worst depth "
+                 << a.worst_depth);
+  CHECK(a.same_prim >= 0.9999 * a.samples);
+  CHECK(a.depth_off == 0);
+  CHECK(a.hits > a.samples / 4);
+}
+
+// An ASCII PLY reader for the shared data's bunnies (x y z first among the vertex
+// properties, then a face list); returns an empty mesh if the file is absent.
+std::shared_ptr<TriangleMesh> readAsciiPly(const std::string& path) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  std::ifstream in(path);
+  if (!in) return mesh;
+  std::string line;
+  size_t vertices = 0, faces = 0, vertex_props = 0;
+  bool in_vertex = false;
+  while (std::getline(in, line) && line.rfind("end_header", 0) != 0) {
+    std::istringstream ls(line);
+    std::string word, kind;
+    ls >> word;
+    if (word == "element") {
+      ls >> kind;
+      in_vertex = kind == "vertex";
+      (in_vertex ? vertices : faces) = 0;
+      ls >> (in_vertex ? vertices : faces);
+    } else if (word == "property" && in_vertex) {
+      ++vertex_props;
+    }
+  }
+  for (size_t v = 0; v < vertices; ++v) {
+    std::getline(in, line);
+    std::istringstream ls(line);
+    float x, y, z;
+    ls >> x >> y >> z;
+    mesh->positions.insert(mesh->positions.end(), {x, y, z});
+  }
+  for (size_t f = 0; f < faces; ++f) {
+    std::getline(in, line);
+    std::istringstream ls(line);
+    size_t n;
+    ls >> n;
+    std::vector<std::uint32_t> idx(n);
+    for (auto& i : idx) ls >> i;
+    for (size_t k = 2; k < n; ++k) mesh->indices.insert(mesh->indices.end(), {idx[0], idx[k - 1], idx[k]});
+  }
+  mesh->source = path;
+  return mesh;
+}
+
+std::string sharedDataDir() {
+  const char* env = std::getenv("PRISM_SHARED_DATA");
+  return env && *env ? env : PRISM_SOURCE_DIR "/../shared/data";
+}
+
+}  // namespace
+
+TEST_CASE("first hits agree with traced rays on triangles, transformed spheres and boxes, and a plane", "[firsthit]") {
+  Scene scene = emptyScene({0.5, 1.0, 9}, {0, 0, 0}, 40, 96, 72);
+  TestRng rng{11};
+  for (int k = 0; k < 1500; ++k) {
+    Vec3 c = rng.vec(-3, 3);
+    double size = k % 50 == 0 ? 2.5 : rng.in(0.05, 0.6);
+    scene.objects.push_back(triangle(c + rng.vec(-size, size), c + rng.vec(-size, size), c + rng.vec(-size, size)));
+  }
+  for (int k = 0; k < 6; ++k) {
+    Transform t = Transform::translate(rng.vec(-2.5, 2.5)) * Transform::rotate(rng.vec(-1, 1), rng.in(0, 180)) *
+                  Transform::scale({rng.in(0.3, 1.2), rng.in(0.3, 1.2), rng.in(0.3, 1.2)});
+    scene.objects.push_back(k % 2 ? sphere({0, 0, 0}, 0.6, t) : sphere(rng.vec(-2.5, 2.5), rng.in(0.2, 0.7)));
+    scene.objects.push_back(k % 2 ? box({-0.5, -0.4, -0.3}, {0.5, 0.4, 0.3}, t) : box({1, 1, 1}, {1.6, 1.3, 1.2}));
+  }
+  scene.objects.push_back(plane({0, -3.5, 0}, normalize(Vec3{0.05, 1, 0.1})));
+  std::vector<float> xy = samplePoints(96, 72, 3, 7);
+  for (int tile : {0, 8, 32}) {
+    INFO("tile size " << tile);
+    checkAgreement(compare(scene, xy, tile));
+  }
+  RenderOptions options = RenderOptions::fromScene(scene);
+  TileBins bins = binPrimitives(flattenScene(scene, options));
+  CHECK(bins.global_prims.size() >= 1);  // the plane
+  CHECK(bins.tile_prims.size() < 8 * scene.objects.size());
+}
+
+TEST_CASE("first hits agree with traced rays when primitives cross the camera plane or surround the camera",
+          "[firsthit]") {
+  // A camera inside a room (a box around it) among triangles and a transformed
+  // sphere that pass beside and behind it; some triangles lie wholly behind it.
+  Scene scene = emptyScene({0, 0, 0}, {0.2, -0.1, -1}, 70, 64, 48);
+  TestRng rng{5};
+  scene.objects.push_back(box({-6, -4, -6}, {6, 4, 6}, Transform::rotate({0, 1, 0}, 20)));
+  for (int k = 0; k < 600; ++k) {
+    Vec3 c = rng.vec(-3, 3);
+    double size = rng.in(0.2, 2.5);
+    scene.objects.push_back(triangle(c + rng.vec(-size, size), c + rng.vec(-size, size), c + rng.vec(-size, size)));
+  }
+  // Slivers from behind the camera to in front of it: their images run off the
+  // film on the side where they cross the camera plane.
+  for (int k = 0; k < 300; ++k) {
+    Vec3 behind{rng.in(-1.5, 1.5), rng.in(-1.5, 1.5), rng.in(0.05, 1)};
+    Vec3 front{rng.in(-1, 1), rng.in(-1, 1), -rng.in(1, 4)};
+    scene.objects.push_back(triangle(behind, front, front + rng.vec(-0.3, 0.3)));
+  }
+  scene.objects.push_back(triangle({-1, -1, 0.5}, {1, -1, 0.5}, {0, 1, 0.7}));  // entirely behind
+  scene.objects.push_back(sphere({0, 0, 0}, 1, Transform::translate({0.3, 0, 0.2}) * Transform::scale({1.5, 0.3, 2})));
+  scene.objects.push_back(plane({0, -2, 0}, {0, 1, 0}));
+  checkAgreement(compare(scene, samplePoints(64, 48, 4, 3)));
+  RenderOptions options = RenderOptions::fromScene(scene);
+  TileBins bins = binPrimitives(flattenScene(scene, options));
+  CHECK(bins.culled >= 1);
+  CHECK(bins.global_prims.size() >= 3);  // the room, the flattened sphere, the plane
+}
+
+TEST_CASE("first hits agree with traced rays on a shared mesh", "[firsthit][mesh]") {
+  const std::string path = sharedDataDir() + "/meshes/bunny/bun_zipper_res3.ply";
+  std::shared_ptr<TriangleMesh> bunny = readAsciiPly(path);
+  if (bunny->indices.empty()) {
+    WARN("shared mesh " << path << " not found (set PRISM_SHARED_DATA); skipped");
+    return;
+  }
+  REQUIRE(bunny->triangleCount() == 3851);
+  Scene scene = emptyScene({0, 1.6, 4}, {0, 1.0, 0}, 35, 80, 60);
+  Object mesh;
+  mesh.type = ObjectType::Mesh;
+  mesh.mesh = bunny;
+  mesh.transform = Transform::translate({0.2, -0.4, 0}) * Transform::scale({14, 14, 14});
+  scene.objects.push_back(mesh);
+  scene.objects.push_back(sphere({-1.3, 0.6, -0.5}, 0.5));
+  scene.objects.push_back(plane({0, 0.05, 0}, {0, 1, 0}));
+  checkAgreement(compare(scene, samplePoints(80, 60, 4, 21)));
+}
+
+TEST_CASE("first hits on a million triangles match the closed form", "[firsthit][scale]") {
+  // A grid of nx x ny quads in the plane z = 0 spanning [-1, 1]^2, each cut along
+  // its diagonal into (p00, p10, p11) and (p00, p11, p01), seen head-on from z = 3.
+  const int nx = 708, ny = 706;
+  const int width = 160, height = 120;
+  Camera camera;
+  camera.position = {0.01, -0.02, 3};
+  camera.look_at = {0.01, -0.02, 0};
+  camera.fov = 2 * std::atan(1.0 / 3.0) * 180 / M_PI;
+  GpuScene gpu;
+  gpu.objects.reserve(2 * static_cast<size_t>(nx) * ny);
+  auto gx = [&](int i) { return static_cast<float>(-1.0 + 2.0 * i / nx); };
+  auto gy = [&](int j) { return static_cast<float>(-1.0 + 2.0 * j / ny); };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      float x0 = gx(i), x1 = gx(i + 1), y0 = gy(j), y1 = gy(j + 1);
+      const float tris[2][9] = {{x0, y0, 0, x1, y0, 0, x1, y1, 0}, {x0, y0, 0, x1, y1, 0, x0, y1, 0}};
+      for (const auto& t : tris) {
+        ObjectGpu o{};
+        o.type = OBJECT_TRIANGLE;
+        std::copy(t, t + 9, o.p);
+        gpu.objects.push_back(o);
+      }
+    }
+  REQUIRE(gpu.objects.size() >= 999000);
+  CameraBasis b = cameraBasis(camera, width, height);
+  auto put = [](float* dst, const Vec3& v) {
+    dst[0] = static_cast<float>(v.x);
+    dst[1] = static_cast<float>(v.y);
+    dst[2] = static_cast<float>(v.z);
+  };
+  put(gpu.camera.origin, b.origin);
+  put(gpu.camera.forward, b.forward);
+  put(gpu.camera.right, b.right);
+  put(gpu.camera.up, b.up);
+  gpu.camera.width = width;
+  gpu.camera.height = height;
+  gpu.camera.spp = 1;
+
+  TileBins bins = binPrimitives(gpu);
+  INFO("tile " << bins.tile_size << " px, " << bins.tile_prims.size() << " entries");
+  CHECK(bins.tile_prims.size() < 2 * gpu.objects.size());  // small triangles land in few tiles
+  CHECK(bins.global_prims.empty());
+
+  std::vector<float> xy = samplePoints(width, height, 1, 9);
+  std::vector<HitGpu> hits = firstHits(sharedContext(), gpu, xy);
+  // The closed form, in double from the float camera: skip samples within 1e-3
+  // of a cell of an edge or a diagonal, where float rounding may pick either side.
+  size_t judged = 0, agree = 0, depth_off = 0;
+  const Vec3 o{gpu.camera.origin[0], gpu.camera.origin[1], gpu.camera.origin[2]};
+  const Vec3 f{gpu.camera.forward[0], gpu.camera.forward[1], gpu.camera.forward[2]};
+  const Vec3 r{gpu.camera.right[0], gpu.camera.right[1], gpu.camera.right[2]};
+  const Vec3 u{gpu.camera.up[0], gpu.camera.up[1], gpu.camera.up[2]};
+  for (size_t k = 0; k < hits.size(); ++k) {
+    double sx = 2.0 * xy[2 * k] / width - 1, sy = 1 - 2.0 * xy[2 * k + 1] / height;
+    Vec3 d = normalize(f + r * sx + u * sy);
+    double t = -o.z / d.z;
+    Vec3 p = o + d * t;
+    double cx = (p.x + 1) * nx / 2, cy = (p.y + 1) * ny / 2;
+    int expected = -1;
+    double fx = cx - std::floor(cx), fy = cy - std::floor(cy);
+    const double m = 1e-3;
+    bool inside = cx >= 0 && cx < nx && cy >= 0 && cy < ny;
+    bool near =
+        std::min({fx, 1 - fx, fy, 1 - fy, std::fabs(fx - fy)}) < m || cx < m || cy < m || cx > nx - m || cy > ny - m;
+    if (near && (inside || cx > -m && cx < nx + m && cy > -m && cy < ny + m)) continue;
+    if (inside) expected = 2 * (static_cast<int>(cy) * nx + static_cast<int>(cx)) + (fx >= fy ? 0 : 1);
+    ++judged;
+    if (hits[k].prim != expected) continue;
+    ++agree;
+    if (expected >= 0 && std::fabs(hits[k].t - t) / t > 1e-5) ++depth_off;
+  }
+  INFO(judged << " judged of " << hits.size() << ", " << agree << " agree");
+  CHECK(judged > 0.95 * hits.size());
+  CHECK(agree >= 0.9999 * judged);
+  CHECK(depth_off == 0);
+}
