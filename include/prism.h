@@ -231,6 +231,8 @@ typedef struct PrismRenderStats {
   uint64_t shadow_rays;
   uint32_t waves;              /* deepest wave reached + 1 */
   uint64_t rays_per_depth[32]; /* camera + secondary rays traced at each depth (0 = primary) */
+  uint32_t accel;              /* the PrismAccel used */
+  double accel_build_seconds;  /* building the spatial index on the host */
 } PrismRenderStats;
 
 /* Renders `scene` with `options` (NULL: the scene's own) into `rgba`, a caller-owned

@@ -52,6 +52,9 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   r.max_depth = static_cast<int>(std::min<uint32_t>(o.max_depth, std::numeric_limits<int>::max()));
   r.min_weight = o.min_weight;
   r.seed = o.seed;
+  const char* accel = prismAccelName(static_cast<PrismAccel>(o.accel));
+  if (!accel) throw std::invalid_argument("render options: unknown accel value " + std::to_string(o.accel));
+  r.accel = parseAccelKind(accel);
   return r;
 }
 
@@ -182,6 +185,9 @@ PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions
   options->max_depth = static_cast<uint32_t>(r.max_depth);
   options->min_weight = static_cast<float>(r.min_weight);
   options->seed = r.seed;
+  PrismAccel accel = PRISM_ACCEL_BVH;
+  prismParseAccel(accelName(r.accel), &accel);
+  options->accel = accel;
   return PRISM_OK;
 }
 
@@ -216,6 +222,10 @@ PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const 
       stats->shadow_rays = r.stats.rays_by_kind[3];
       stats->waves = static_cast<uint32_t>(r.stats.waves);
       for (int d = 0; d < 32; ++d) stats->rays_per_depth[d] = r.stats.rays_per_depth[d];
+      PrismAccel accel = PRISM_ACCEL_BVH;
+      prismParseAccel(accelName(r.stats.accel), &accel);
+      stats->accel = accel;
+      stats->accel_build_seconds = r.stats.accel_stats.build_seconds;
     }
     return PRISM_OK;
   });

@@ -117,14 +117,15 @@ void printSummary(const RenderRequest& request, const PrismRenderOptions& option
                   const PrismRenderStats& stats) {
   const uint64_t total = stats.primary_rays + stats.reflected_rays + stats.refracted_rays + stats.shadow_rays;
   const double mrays = stats.seconds > 0.0 ? static_cast<double>(total) / stats.seconds / 1e6 : 0.0;
+  const char* accel = prismAccelName(static_cast<PrismAccel>(stats.accel));
   std::printf(
-      "prism: rendered %ux%u at %u spp on '%s' in %.2f s (kernels %.2f s): %llu primary, %llu reflected, "
-      "%llu refracted, %llu shadow rays, %.2f Mrays/s -> %s\n",
+      "prism: rendered %ux%u at %u spp on '%s' with %s (built in %.2f s) in %.2f s (kernels %.2f s): "
+      "%llu primary, %llu reflected, %llu refracted, %llu shadow rays, %.2f Mrays/s -> %s\n",
       static_cast<unsigned>(options.width), static_cast<unsigned>(options.height),
-      static_cast<unsigned>(options.spp), device.name, stats.seconds, stats.kernel_build_seconds,
-      static_cast<unsigned long long>(stats.primary_rays), static_cast<unsigned long long>(stats.reflected_rays),
-      static_cast<unsigned long long>(stats.refracted_rays), static_cast<unsigned long long>(stats.shadow_rays),
-      mrays, request.output_path.c_str());
+      static_cast<unsigned>(options.spp), device.name, accel ? accel : "?", stats.accel_build_seconds,
+      stats.seconds, stats.kernel_build_seconds, static_cast<unsigned long long>(stats.primary_rays),
+      static_cast<unsigned long long>(stats.reflected_rays), static_cast<unsigned long long>(stats.refracted_rays),
+      static_cast<unsigned long long>(stats.shadow_rays), mrays, request.output_path.c_str());
 }
 
 }  // namespace

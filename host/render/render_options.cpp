@@ -14,6 +14,7 @@ RenderOptions RenderOptions::fromScene(const Scene& scene) {
   o.max_depth = scene.render.max_depth;
   o.min_weight = scene.render.min_weight;
   o.seed = scene.render.seed;
+  o.accel = parseAccelKind(scene.render.accel);
   return o;
 }
 

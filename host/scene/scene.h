@@ -32,6 +32,7 @@ struct RenderSettings {
   Vec3 ambient{0.1, 0.1, 0.1};
   Vec3 background{0, 0, 0};
   unsigned long long seed = 0;
+  std::string accel = "bvh";  // spatial index: bvh, octree, bsp or none
 };
 
 struct Light {

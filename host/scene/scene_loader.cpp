@@ -233,7 +233,7 @@ class SceneParser {
   }
 
   void parseRender(const Json& v, const std::string& path) {
-    checkObject(v, path, {"max_depth", "min_weight", "ambient", "background", "seed"});
+    checkObject(v, path, {"max_depth", "min_weight", "ambient", "background", "seed", "accel"});
     RenderSettings& r = m_scene.render;
     if (const Json* p = find(v, "max_depth"))
       r.max_depth = int(integer(*p, member(path, "max_depth"), 0, kMaxDepth));
@@ -243,6 +243,12 @@ class SceneParser {
     if (const Json* p = find(v, "ambient")) r.ambient = colour(*p, member(path, "ambient"));
     if (const Json* p = find(v, "background")) r.background = colour(*p, member(path, "background"));
     if (const Json* p = find(v, "seed")) r.seed = seed(*p, member(path, "seed"));
+    if (const Json* p = find(v, "accel")) {
+      const std::string name = string(*p, member(path, "accel"), "a string (bvh, octree, bsp, none)");
+      if (name != "bvh" && name != "octree" && name != "bsp" && name != "none")
+        fail(member(path, "accel"), "unknown acceleration structure '" + name + "' (expected bvh, octree, bsp, none)");
+      r.accel = name;
+    }
   }
 
   void parseMaterials(const Json& v, const std::string& path) {
