@@ -256,6 +256,34 @@ PRISM_API PrismStatus prismParseAov(const char* name, PrismAov* aov);
  * `count` is the buffer's size in floats). AOVs come from each pixel's first sample. */
 PRISM_API PrismStatus prismGetAov(PrismContext context, PrismAov aov, float* out, size_t count);
 
+/* ---- ray queries ------------------------------------------------------------------ */
+
+/* prism as a ray-query engine for other programs: closest or any hit of caller
+ * rays against a scene's primitives, numbered as the primid AOV numbers them
+ * (objects in order; a mesh counts its triangles in file order). The spatial index
+ * is built on first use and kept in the context for the same scene and structure
+ * until the scene changes. */
+typedef struct PrismRay {
+  float org[3];
+  float tmin;
+  float dir[3]; /* need not be unit length; t is in units of dir */
+  float tmax;
+} PrismRay;     /* 32 bytes: the record `prism trace` reads */
+
+typedef struct PrismHit {
+  float t;      /* +inf on a miss */
+  int32_t prim; /* -1 on a miss */
+  float u, v;   /* triangles: barycentrics of vertices 1 and 2; 0 otherwise */
+} PrismHit;     /* 16 bytes: the record `prism trace` writes */
+
+/* Closest hit in (tmin, tmax) for each of `count` rays. `trace_seconds` (may be
+ * NULL) receives the time of the tracing alone, without build, upload or compile. */
+PRISM_API PrismStatus prismIntersect(PrismContext context, PrismScene scene, PrismAccel accel, const PrismRay* rays,
+                                     PrismHit* hits, size_t count, double* trace_seconds);
+/* 1 where anything lies in (tmin, tmax) along the ray, else 0. */
+PRISM_API PrismStatus prismOccluded(PrismContext context, PrismScene scene, PrismAccel accel, const PrismRay* rays,
+                                    uint8_t* occluded, size_t count, double* trace_seconds);
+
 /* ---- images -------------------------------------------------------------------- */
 
 /* Writes linear float pixels (rows top to bottom, `channels` of 1, 3 or 4) to `path`

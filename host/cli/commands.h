@@ -17,6 +17,7 @@ int runDevices(const std::vector<std::string>& args);
 int runRender(const std::vector<std::string>& args);
 int runInfo(const std::vector<std::string>& args);
 int runPlugins(const std::vector<std::string>& args);
+int runTrace(const std::vector<std::string>& args);
 
 // "prism: error: <message>" on stderr.
 void printError(const std::string& message);

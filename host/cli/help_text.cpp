@@ -9,6 +9,7 @@ Usage:
   prism render SCENE.json -o OUT [options]   render a scene to an image file
   prism render MESH.ply -o OUT [options]     render a mesh file (.obj .ply .off ...)
                                              with a camera that frames it
+  prism trace SCENE|MESH --rays IN --hits OUT   closest (or any) hits of a file of rays
   prism info [--json] MESH                   what a mesh file holds
   prism plugins                              the mesh-format plugins found
   prism devices                              list the OpenCL devices prism can use
@@ -171,6 +172,34 @@ shared library it looked at but refused, with the reason (not loadable, missing
 entry symbol, wrong ABI version). Search order: the folders in $PRISM_PLUGIN_PATH
 (colon-separated), then plugins/ next to libprism. The plugin ABI is documented in
 docs/plugins.md.
+)";
+
+const char* const kTraceHelp =
+    R"(Usage: prism trace SCENE.json|MESH --rays IN --hits OUT [options]
+
+Traces a file of rays against a scene or a mesh file and writes one hit per ray:
+prism as a ray-query engine for other programs (the C API does the same with
+prismIntersect and prismOccluded).
+
+  --rays IN      rays: no header, 32-byte little-endian records
+                   float ox, oy, oz, tmin, dx, dy, dz, tmax
+                 (the direction need not be unit length; t is in its units)
+  --hits OUT     hits: one 16-byte record per ray, in ray order
+                   float t; int32 prim; float u, v
+                 t = +inf and prim = -1 on a miss. prim numbers the primitives as
+                 the primid AOV does: objects in scene order, a mesh counting its
+                 triangles in file order (polygons fanned as (v0, vk, vk+1);
+                 zero-area triangles keep their numbers). u, v: barycentrics of
+                 vertices 1 and 2 (0 for analytic objects).
+  --occluded     answer any-hit instead: t = 0 where something lies in
+                 (tmin, tmax), +inf where nothing does; prim = -1, u = v = 0
+  --accel A      bvh (default), octree, bsp or none
+  --device D     the OpenCL device, as for 'prism render'
+  --no-cache     compile the kernels afresh
+  --quiet        no summary line
+
+The summary gives the throughput of the tracing alone (no load, build, upload or
+compilation) in Mrays/s.
 )";
 
 }  // namespace prism_cli

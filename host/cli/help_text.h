@@ -9,5 +9,6 @@ extern const char* const kRenderHelp;
 extern const char* const kDevicesHelp;
 extern const char* const kInfoHelp;
 extern const char* const kPluginsHelp;
+extern const char* const kTraceHelp;
 
 }  // namespace prism_cli

@@ -26,18 +26,20 @@ int showHelp(const std::vector<std::string>& args) {
     std::fputs(kDevicesHelp, stdout);
   } else if (topic == "info") {
     std::fputs(kInfoHelp, stdout);
+  } else if (topic == "trace") {
+    std::fputs(kTraceHelp, stdout);
   } else if (topic == "plugins") {
     std::fputs(kPluginsHelp, stdout);
   } else if (topic.empty()) {
     std::fputs(kMainHelp, stdout);
   } else {
-    throw UsageError("no help on '" + topic + "' (commands: render, devices, info, plugins)");
+    throw UsageError("no help on '" + topic + "' (commands: render, trace, devices, info, plugins)");
   }
   return kExitOk;
 }
 
 int dispatch(const std::vector<std::string>& args) {
-  if (args.empty()) throw UsageError("no command given (commands: render, devices, info, plugins)");
+  if (args.empty()) throw UsageError("no command given (commands: render, trace, devices, info, plugins)");
   const std::string& command = args[0];
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (isHelp(command)) return showHelp(args);
@@ -49,15 +51,17 @@ int dispatch(const std::vector<std::string>& args) {
   if (command == "devices") return runDevices(rest);
   if (command == "info") return runInfo(rest);
   if (command == "plugins") return runPlugins(rest);
+  if (command == "trace") return runTrace(rest);
   if (!command.empty() && command[0] == '-') {
     throw UsageError("unknown option '" + command +
                      "' (options follow a command, as in 'prism render scene.json -o out.png --spp 4')");
   }
-  throw UsageError("unknown command '" + command + "' (commands: render, devices, info, plugins)");
+  throw UsageError("unknown command '" + command + "' (commands: render, trace, devices, info, plugins)");
 }
 
 std::string helpHint(const std::vector<std::string>& args) {
-  if (!args.empty() && (args[0] == "render" || args[0] == "devices" || args[0] == "info" || args[0] == "plugins"))
+  if (!args.empty() && (args[0] == "render" || args[0] == "devices" || args[0] == "info" || args[0] == "plugins" ||
+                         args[0] == "trace"))
     return "prism " + args[0] + " --help";
   return "prism --help";
 }

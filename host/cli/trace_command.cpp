@@ -1,0 +1,137 @@
+// `prism trace SCENE_OR_MESH --rays IN --hits OUT`: prism as a ray-query engine
+// for other programs, through prismIntersect / prismOccluded.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "args.h"
+#include "commands.h"
+#include "help_text.h"
+#include "prism.h"
+#include "render_args.h"
+
+namespace prism_cli {
+namespace {
+
+const std::vector<OptionSpec> kTraceOptions = {
+    {"--rays", "", true},  {"--hits", "", true},      {"--accel", "", true}, {"--device", "", true},
+    {"--occluded", "", false}, {"--no-cache", "", false}, {"--quiet", "", false}, {"--help", "-h", false},
+};
+
+struct SceneDeleter {
+  void operator()(PrismSceneImpl* s) const { prismReleaseScene(s); }
+};
+struct ContextDeleter {
+  void operator()(PrismContextImpl* c) const { prismReleaseContext(c); }
+};
+
+// The whole file; a size that is not a whole number of 32-byte rays is an error.
+bool readRays(const std::string& path, std::vector<PrismRay>& rays) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) {
+    printError("cannot read rays from '" + path + "'");
+    return false;
+  }
+  const std::streamoff size = in.tellg();
+  if (size % static_cast<std::streamoff>(sizeof(PrismRay)) != 0) {
+    printError("'" + path + "' holds " + std::to_string(size) +
+               " bytes, not a whole number of 32-byte rays (float ox, oy, oz, tmin, dx, dy, dz, tmax)");
+    return false;
+  }
+  rays.resize(static_cast<size_t>(size) / sizeof(PrismRay));
+  in.seekg(0);
+  if (!rays.empty() && !in.read(reinterpret_cast<char*>(rays.data()), size)) {
+    printError("cannot read rays from '" + path + "'");
+    return false;
+  }
+  return true;
+}
+
+// Written under a temporary name and renamed, so a failure leaves no half file.
+bool writeHits(const std::string& path, const std::vector<PrismHit>& hits) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(hits.data()), static_cast<std::streamsize>(hits.size() * sizeof(PrismHit)));
+    if (!out) {
+      std::remove(tmp.c_str());
+      printError("cannot write hits to '" + path + "'");
+      return false;
+    }
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    printError("cannot write hits to '" + path + "'");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int runTrace(const std::vector<std::string>& args) {
+  const ParsedArgs parsed = parseArgs(args, kTraceOptions, "prism trace");
+  if (parsed.has("--help")) {
+    std::fputs(kTraceHelp, stdout);
+    return kExitOk;
+  }
+  if (parsed.positionals().size() != 1) throw UsageError("expected one scene or mesh file");
+  const std::string input = parsed.positionals()[0];
+  const auto rays_path = parsed.text("--rays");
+  const auto hits_path = parsed.text("--hits");
+  if (!rays_path) throw UsageError("missing --rays IN, the binary file of rays to trace");
+  if (!hits_path) throw UsageError("missing --hits OUT, the file to write the hits to");
+  PrismAccel accel = PRISM_ACCEL_BVH;
+  if (const auto name = parsed.text("--accel"))
+    if (prismParseAccel(name->c_str(), &accel) != PRISM_OK)
+      throw UsageError("--accel: unknown structure '" + *name + "' (expected bvh, octree, bsp or none)");
+  const bool occlusion = parsed.has("--occluded");
+
+  std::vector<PrismRay> rays;
+  if (!readRays(*rays_path, rays)) return kExitFailure;
+
+  PrismScene raw_scene = nullptr;
+  const bool is_scene = lowerExtension(input) == ".json";
+  if ((is_scene ? prismLoadScene(input.c_str(), &raw_scene) : prismLoadMeshAsScene(input.c_str(), &raw_scene)) !=
+      PRISM_OK)
+    return failWithLastError();
+  std::unique_ptr<PrismSceneImpl, SceneDeleter> scene(raw_scene);
+
+  PrismContextOptions context_options;
+  prismDefaultContextOptions(&context_options);
+  context_options.use_kernel_cache = parsed.has("--no-cache") ? 0 : 1;
+  PrismContext raw_context = nullptr;
+  const auto device = parsed.text("--device");
+  if (prismCreateContext(device ? device->c_str() : nullptr, &context_options, &raw_context) != PRISM_OK)
+    return failWithLastError();
+  std::unique_ptr<PrismContextImpl, ContextDeleter> context(raw_context);
+
+  std::vector<PrismHit> hits(rays.size());
+  double seconds = 0;
+  if (occlusion) {
+    std::vector<uint8_t> blocked(rays.size());
+    if (prismOccluded(context.get(), scene.get(), accel, rays.data(), blocked.data(), rays.size(), &seconds) !=
+        PRISM_OK)
+      return failWithLastError();
+    for (size_t i = 0; i < rays.size(); ++i)
+      hits[i] = PrismHit{blocked[i] ? 0.0f : std::numeric_limits<float>::infinity(), -1, 0.0f, 0.0f};
+  } else if (prismIntersect(context.get(), scene.get(), accel, rays.data(), hits.data(), rays.size(), &seconds) !=
+             PRISM_OK) {
+    return failWithLastError();
+  }
+  if (!writeHits(*hits_path, hits)) return kExitFailure;
+  if (!parsed.has("--quiet")) {
+    PrismDeviceInfo info{};
+    prismGetContextDevice(context.get(), &info);
+    std::printf("prism: traced %zu rays (%s) with %s on '%s' in %.4f s: %.2f Mrays/s -> %s\n", rays.size(),
+                occlusion ? "any hit" : "closest hit", prismAccelName(accel), info.name, seconds,
+                seconds > 0 ? static_cast<double>(rays.size()) / seconds / 1e6 : 0.0, hits_path->c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace prism_cli
