@@ -93,11 +93,19 @@ double agreementPercent(const std::vector<HitGpu>& a, const std::vector<HitGpu>&
   return 100.0 * same / a.size();
 }
 
+// The same colour for a structure in every figure; Embree in black.
+long structureColour(const std::string& s) {
+  if (s == "bvh") return 0x0072B2;
+  if (s == "octree") return 0xD55E00;
+  if (s == "bsp") return 0x009E73;
+  if (s == "none") return 0xCC79A7;
+  return 0x000000;
+}
+
 void writePlots(const std::string& dir, const std::vector<BenchRow>& rows) {
   std::vector<std::string> order;
   for (const BenchRow& r : rows)
     if (std::find(order.begin(), order.end(), r.structure) == order.end()) order.push_back(r.structure);
-  // Embree last, so it takes the palette's black.
   std::stable_partition(order.begin(), order.end(), [](const std::string& s) { return s != "embree"; });
   struct Figure {
     const char* file;
@@ -114,9 +122,14 @@ void writePlots(const std::string& dir, const std::vector<BenchRow>& rows) {
   for (const Figure& f : figures) {
     std::vector<PlotSeries> series;
     for (const std::string& s : order) {
-      PlotSeries ps{s, {}};
+      PlotSeries ps;
+      ps.name = s;
+      ps.color = structureColour(s);
+      // Generated tori form a size sweep (a line); other scenes are markers.
       for (const BenchRow& r : rows)
-        if (r.structure == s) ps.points.emplace_back(static_cast<double>(r.triangles), r.*f.field);
+        if (r.structure == s)
+          (r.scene.rfind("torus-", 0) == 0 ? ps.line : ps.markers)
+              .emplace_back(static_cast<double>(r.triangles), r.*f.field);
       series.push_back(ps);
     }
     writeLogLogPlot(dir + "/" + f.file, f.title, "triangles", f.y, series);

@@ -52,7 +52,7 @@ struct Rgb {
   std::uint8_t r, g, b;
 };
 
-// Colour-blind-safe palette (Okabe and Ito), Embree last in black by convention of the caller.
+// Colour-blind-safe palette (Okabe and Ito), for series without their own colour.
 const Rgb kPalette[] = {{0, 114, 178}, {213, 94, 0}, {0, 158, 115}, {204, 121, 167},
                         {230, 159, 0}, {86, 180, 233}, {0, 0, 0}, {120, 120, 120}};
 
@@ -140,14 +140,18 @@ std::vector<std::uint8_t> renderLogLogPlot(const std::string& title, const std::
   const int W = 900, H = 600, left = 90, right = 190, top = 50, bottom = 70;
   Canvas cv(W, H);
   double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+  auto usable = [](std::pair<double, double> p) {
+    return p.first > 0 && p.second > 0 && std::isfinite(p.first) && std::isfinite(p.second);
+  };
   for (const PlotSeries& s : series)
-    for (auto [x, y] : s.points)
-      if (x > 0 && y > 0 && std::isfinite(x) && std::isfinite(y)) {
-        xmin = std::min(xmin, x);
-        xmax = std::max(xmax, x);
-        ymin = std::min(ymin, y);
-        ymax = std::max(ymax, y);
-      }
+    for (const auto* list : {&s.line, &s.markers})
+      for (auto p : *list)
+        if (usable(p)) {
+          xmin = std::min(xmin, p.first);
+          xmax = std::max(xmax, p.first);
+          ymin = std::min(ymin, p.second);
+          ymax = std::max(ymax, p.second);
+        }
   if (!(xmin <= xmax)) xmin = 1, xmax = 10, ymin = 1, ymax = 10;
   // Whole decades around the data.
   int ex0 = static_cast<int>(std::floor(std::log10(xmin))), ex1 = static_cast<int>(std::ceil(std::log10(xmax)));
@@ -184,12 +188,15 @@ std::vector<std::uint8_t> renderLogLogPlot(const std::string& title, const std::
   cv.text(left + static_cast<int>(pw) / 2 - Canvas::textWidth(x_label, 2) / 2, H - 30, x_label, ink, 2);
   cv.text(18, top + static_cast<int>(ph) / 2 + Canvas::textWidth(y_label, 2) / 2, y_label, ink, 2, true);
 
+  int next_colour = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
     const PlotSeries& s = series[i];
-    Rgb c = kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
+    Rgb c = s.color >= 0 ? Rgb{static_cast<std::uint8_t>(s.color >> 16), static_cast<std::uint8_t>(s.color >> 8),
+                               static_cast<std::uint8_t>(s.color)}
+                         : kPalette[next_colour++ % (sizeof kPalette / sizeof kPalette[0])];
     std::vector<std::pair<double, double>> pts;
-    for (auto p : s.points)
-      if (p.first > 0 && p.second > 0 && std::isfinite(p.first) && std::isfinite(p.second)) pts.push_back(p);
+    for (auto p : s.line)
+      if (usable(p)) pts.push_back(p);
     std::sort(pts.begin(), pts.end());
     for (std::size_t k = 1; k < pts.size(); ++k)
       cv.line(px(pts[k - 1].first), py(pts[k - 1].second), px(pts[k].first), py(pts[k].second), c, 3);
@@ -197,11 +204,22 @@ std::vector<std::uint8_t> renderLogLogPlot(const std::string& title, const std::
       int x = static_cast<int>(std::lround(px(p.first))), y = static_cast<int>(std::lround(py(p.second)));
       cv.fill(x - 4, y - 4, x + 4, y + 4, c);
     }
+    for (auto p : s.markers) {
+      if (!usable(p)) continue;
+      int x = static_cast<int>(std::lround(px(p.first))), y = static_cast<int>(std::lround(py(p.second)));
+      cv.line(x - 5, y - 5, x + 5, y - 5, c, 2);
+      cv.line(x + 5, y - 5, x + 5, y + 5, c, 2);
+      cv.line(x + 5, y + 5, x - 5, y + 5, c, 2);
+      cv.line(x - 5, y + 5, x - 5, y - 5, c, 2);
+    }
     int ly = top + 10 + static_cast<int>(i) * 26;
     cv.line(left + pw + 16, ly + 7, left + pw + 46, ly + 7, c, 3);
     cv.fill(static_cast<int>(left + pw) + 27, ly + 3, static_cast<int>(left + pw) + 35, ly + 11, c);
     cv.text(static_cast<int>(left + pw) + 54, ly, s.name, ink, 2);
   }
+  const int note_y = top + 20 + static_cast<int>(series.size()) * 26;
+  cv.text(static_cast<int>(left + pw) + 14, note_y, "lines: tori", ink, 1);
+  cv.text(static_cast<int>(left + pw) + 14, note_y + 12, "squares: meshes", ink, 1);
   *width = W;
   *height = H;
   return std::move(cv.pixels());

@@ -12,10 +12,14 @@ namespace prism::bench {
 
 struct PlotSeries {
   std::string name;
-  std::vector<std::pair<double, double>> points;  // (x, y), both > 0; others are skipped
+  std::vector<std::pair<double, double>> line;     // (x, y) joined by a line, in x order
+  std::vector<std::pair<double, double>> markers;  // (x, y) drawn as open squares only
+  // 0xRRGGBB, or -1 for the next colour of the palette.
+  long color = -1;
 };
 
-// One line per series with a legend, decade grid lines and labels. Throws
+// One line (and markers) per series with a legend, decade grid lines and
+// labels; points with x or y not finite and positive are skipped. Throws
 // std::runtime_error naming the path when the file cannot be written.
 void writeLogLogPlot(const std::string& path, const std::string& title, const std::string& x_label,
                      const std::string& y_label, const std::vector<PlotSeries>& series);

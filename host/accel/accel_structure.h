@@ -71,13 +71,18 @@ struct DeviceAccel {
 
 struct AccelBuildOptions {
   int threads = 0;  // 0: std::thread::hardware_concurrency()
-  // Octree: a cell splits while it holds more than this many primitives and
-  // its depth is below octree_max_depth.
-  int octree_leaf_prims = 8;
-  int octree_max_depth = 10;
-  // BSP: see bsp_builder.h for the termination rule these feed.
+  // Octree: a cell splits while it holds more than octree_leaf_prims
+  // primitives and its depth is below octree_max_depth, as long as its octants
+  // hold at most octree_max_growth times its references (octree_builder.cpp).
+  int octree_leaf_prims = 12;
+  int octree_max_depth = 12;
+  double octree_max_growth = 1.5;
+  // BSP: split costs C_T + C_I (A_L N_L + A_R N_R) / A (times the empty bonus
+  // when a side is empty) against C_I N for a leaf (bsp_builder.cpp). C_I is
+  // per primitive: a 4-wide packet test costs about 0.6 of a node step on
+  // PoCL, measured with prism-bench (docs/accel.md).
   double bsp_traversal_cost = 1.0;
-  double bsp_intersection_cost = 1.5;
+  double bsp_intersection_cost = 0.15;
   double bsp_empty_bonus = 0.8;
 };
 

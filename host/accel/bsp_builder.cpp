@@ -20,7 +20,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
-#include <cstdlib>
 #include <memory>
 
 #include "accel/builders.h"
@@ -113,14 +112,21 @@ class BspBuilder {
       }
       std::sort(los.begin(), los.end());
       std::sort(his.begin(), his.end());
-      auto evaluate = [&](float s) {
-        std::size_t nl = std::upper_bound(los.begin(), los.end(), s) - los.begin();
-        std::size_t nr = n - (std::lower_bound(his.begin(), his.end(), s) - his.begin());
-        consider(best, node.box, axis, s, nl, nr);
-      };
-      for (std::size_t i = 0; i < n; ++i) {
-        if (i == 0 || los[i] != los[i - 1]) evaluate(std::nextafter(los[i], -kInf));
-        if (i == 0 || his[i] != his[i - 1]) evaluate(std::nextafter(his[i], kInf));
+      // Candidates in increasing order (a merge of the two sorted lists), with
+      // the counts advanced alongside: linear after the sorts.
+      std::size_t i = 0, j = 0, below = 0, ended = 0;
+      float last = -kInf;
+      while (i < n || j < n) {
+        float s;
+        if (j >= n || (i < n && std::nextafter(los[i], -kInf) <= std::nextafter(his[j], kInf)))
+          s = std::nextafter(los[i++], -kInf);
+        else
+          s = std::nextafter(his[j++], kInf);
+        if (s == last) continue;
+        last = s;
+        while (below < n && los[below] <= s) ++below;
+        while (ended < n && his[ended] < s) ++ended;
+        consider(best, node.box, axis, s, below, n - ended);
       }
     }
   }
@@ -281,11 +287,7 @@ void buildBsp(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
               DeviceAccel& out) {
   CellBox root = toCell(prims.scene);
   if (prims.bounded.empty()) root = CellBox{{0, 0, 0}, {0, 0, 0}};
-  AccelBuildOptions tuned = options;  // TUNING-ONLY
-  if (const char* e = std::getenv("TUNE_CT")) tuned.bsp_traversal_cost = std::atof(e);
-  if (const char* e = std::getenv("TUNE_CI")) tuned.bsp_intersection_cost = std::atof(e);
-  if (const char* e = std::getenv("TUNE_EB")) tuned.bsp_empty_bonus = std::atof(e);
-  BspBuilder builder(objects, prims, tuned);
+  BspBuilder builder(objects, prims, options);
   std::unique_ptr<KdNode> tree = builder.build(root);
   writeSceneHeader(prims.scene, out);
   BspFlattener(objects, prims, out).run(*tree);

@@ -3,6 +3,8 @@
 // already put the unbounded primitives aside and will time the build.
 #pragma once
 
+#include <cstring>
+#include <string>
 #include <vector>
 
 #include "accel/accel_structure.h"
@@ -29,17 +31,8 @@ void writeSceneHeader(const Aabb& scene, DeviceAccel& out);
 std::string stackOption(int entries);
 void finishReferenceStats(const std::vector<int>& refs_per_prim, AccelStats& stats);
 
-// Appends a plain struct to the node buffer as 16-byte words (its size must be
-// a multiple of 16 or it is padded).
-template <typename T>
-std::size_t appendNodeWords(std::vector<AccelWord>& words, const T* nodes, std::size_t count);
-
-}  // namespace prism
-
-#include <cstring>
-
-namespace prism {
-
+// Appends plain structs to the node buffer as 16-byte words (the last word is
+// zero-padded); returns the first word's index.
 template <typename T>
 std::size_t appendNodeWords(std::vector<AccelWord>& words, const T* nodes, std::size_t count) {
   std::size_t first = words.size();

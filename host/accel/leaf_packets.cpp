@@ -26,12 +26,6 @@ void putTriangle(TriPacketGpu& p, int lane, const ObjectGpu& ob, std::int32_t id
 
 }  // namespace
 
-std::size_t leafPacketCount(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n) {
-  std::size_t tris = 0;
-  for (std::size_t i = 0; i < n; ++i) tris += isPacketTriangle(objects[ids[i]]) ? 1 : 0;
-  return (tris + PACKET_LANES - 1) / PACKET_LANES + (n - tris + PACKET_LANES - 1) / PACKET_LANES;
-}
-
 PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
                               std::vector<TriPacketGpu>& out) {
   PacketRange range;

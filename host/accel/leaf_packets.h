@@ -17,9 +17,6 @@ struct PacketRange {
   std::uint32_t count = 0;
 };
 
-// Packets one leaf of these primitives needs.
-std::size_t leafPacketCount(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n);
-
 // Appends the leaf's packets to `out` and returns where they are.
 PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
                               std::vector<TriPacketGpu>& out);

@@ -1,15 +1,18 @@
 // Octree: an adaptive subdivision of a box around the scene into eight octants
 // at a time (kernels/shared/octree_node_gpu.h). Termination rule: a cell splits
 // while it holds more than AccelBuildOptions::octree_leaf_prims primitives and
-// its depth is below octree_max_depth, unless the split makes no progress
-// (every non-empty octant would receive all of the cell's primitives, as with
-// many large primitives crossing the cell) or the cell is too small to halve
-// in float. A primitive goes into every octant it meets, decided exactly
+// its depth is below octree_max_depth, unless
+//   - the split makes no progress: two or more octants would each receive all
+//     of the cell's primitives (many large primitives crossing the cell);
+//   - the octants would hold more than octree_max_growth times the cell's
+//     references in all: the cells have become smaller than the primitives,
+//     and halving them again mostly copies references (on a scanned mesh this
+//     is what bounds memory, PERF notes in docs/accel.md);
+//   - the cell is too small to halve in float. A primitive goes into every octant it meets, decided exactly
 // (exact_predicates.h); octants left empty are not stored.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <memory>
 
 #include "accel/builders.h"
@@ -80,9 +83,17 @@ class OctreeBuilder {
     }
     m_exact_tests += tests;
 
+    // No progress: two or more octants and each of them would hold everything.
+    // (One octant holding everything is progress: the cell shrinks around it.)
     bool progress = false;
-    for (auto& l : lists)
+    std::size_t total = 0, occupied = 0;
+    for (auto& l : lists) {
       if (!l.empty() && l.size() < n) progress = true;
+      occupied += l.empty() ? 0 : 1;
+      total += l.size();
+    }
+    if (occupied == 1) progress = true;
+    if (total > m_options.octree_max_growth * n) progress = false;
     if (!progress) {
       cell.items = std::move(items);
       return;
@@ -209,10 +220,7 @@ void buildOctree(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prim
       root.hi[a] = roundUp(std::max<double>(mid + half, prims.scene.hi[a]));
     }
   }
-  AccelBuildOptions tuned = options;  // TUNING-ONLY
-  if (const char* e = std::getenv("TUNE_OT")) tuned.octree_leaf_prims = std::atoi(e);
-  if (const char* e = std::getenv("TUNE_OD")) tuned.octree_max_depth = std::atoi(e);
-  OctreeBuilder builder(objects, prims, tuned);
+  OctreeBuilder builder(objects, prims, options);
   std::unique_ptr<Cell> tree = builder.build(root);
   Aabb header;
   for (int a = 0; a < 3; ++a) {

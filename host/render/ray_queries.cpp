@@ -137,6 +137,19 @@ std::vector<float> RayQueryEngine::transmittance(const std::vector<RayGpu>& rays
   return runOcclude(rays, m_has_materials, trace_seconds);
 }
 
+TraceResult traceRays(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
+                      const std::vector<QueryRay>& rays, bool occlusion) {
+  RayQueryEngine engine(context, std::move(objects), kind);
+  TraceResult result;
+  if (occlusion)
+    result.occluded = engine.occluded(rays, &result.trace_seconds);
+  else
+    result.hits = engine.intersect(rays, &result.trace_seconds);
+  result.compile_seconds = engine.compileSeconds();
+  result.accel = engine.accel().stats;
+  return result;
+}
+
 std::vector<HitGpu> traceClosest(Context& context, const Scene& scene, const std::vector<RayGpu>& rays,
                                  AccelKind accel) {
   GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));

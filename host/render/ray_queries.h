@@ -84,4 +84,16 @@ class RayQueryEngine {
 // The 64-byte queue record of a query ray (weight 1, primary, pixel = index).
 std::vector<RayGpu> toRayGpu(const std::vector<QueryRay>& rays);
 
+// One batch of rays through a structure built for it: what `prism trace` and
+// prismIntersect / prismOccluded need, in one call.
+struct TraceResult {
+  std::vector<HitGpu> hits;            // closest hits (when occlusion was not asked)
+  std::vector<std::uint8_t> occluded;  // 1 = something in (tmin, tmax) (when it was)
+  double trace_seconds = 0;            // the kernel runs alone
+  double compile_seconds = 0;          // kernels built or loaded, and warmed up
+  AccelStats accel;                    // the structure's build, build_seconds included
+};
+TraceResult traceRays(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
+                      const std::vector<QueryRay>& rays, bool occlusion);
+
 }  // namespace prism

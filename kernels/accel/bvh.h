@@ -70,7 +70,7 @@ inline bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tm
   int code = 0; /* the root */
   for (;;) {
     if (code >= 0) {
-      __global const float8* n = nodes + 7 * code;
+        __global const float8* n = nodes + 7 * code;
       float8 tn;
       int mask = bvh_node_mask(n, &r, tmin, best, &tn);
       if (mask) {

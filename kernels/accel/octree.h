@@ -13,10 +13,25 @@
 #include "accel/leaf_packets.h"
 #include "shared/octree_node_gpu.h"
 
-/* The octants an inner cell's interval [t0, t1] passes, nearest first:
- * out_bits[k] (octant), [out_t0[k], out_t1[k]]; returns their number. */
-inline int octree_segments(__global const OctreeNodeGpu* n, float3 o, float3 inv, float t0, float t1, int* out_bits,
-                           float* out_t0, float* out_t1) {
+inline int octree_child(__global const OctreeNodeGpu* n, int octant) {
+  return n->first_child + popcount(n->child_mask & ((1 << octant) - 1));
+}
+
+inline void octree_push1(__global const OctreeNodeGpu* n, int octant, float lo, float hi, int* stack_node,
+                         float* stack_t0, float* stack_t1, int* sp) {
+  if (!((n->child_mask >> octant) & 1)) return;
+  stack_node[*sp] = octree_child(n, octant);
+  stack_t0[*sp] = lo;
+  stack_t1[*sp] = hi;
+  ++*sp;
+}
+
+/* Pushes the octants an inner cell's interval [t0, t1] passes, farthest
+ * first, so the nearest is on top. The ray's parameters at the three centre
+ * planes, sorted, cut the interval into at most four pieces; crossing a plane
+ * flips that axis' octant bit. */
+inline void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv, float t0, float t1, int* stack_node,
+                        float* stack_t0, float* stack_t1, int* sp) {
   float3 tm = ((float3)(n->cx, n->cy, n->cz) - o) * inv;
   float t0e = t0 - ACCEL_CELL_EPS * fabs(t0);
   float t1e = t1 + ACCEL_CELL_EPS * fabs(t1);
@@ -25,49 +40,31 @@ inline int octree_segments(__global const OctreeNodeGpu* n, float3 o, float3 inv
   int bits = (inv.x >= 0.0f ? t0e >= tm.x : t0e < tm.x) ? 1 : 0;
   bits |= (inv.y >= 0.0f ? t0e >= tm.y : t0e < tm.y) ? 2 : 0;
   bits |= (inv.z >= 0.0f ? t0e >= tm.z : t0e < tm.z) ? 4 : 0;
-  /* The three crossings, sorted. */
-  float s0 = tm.x, s1 = tm.y, s2 = tm.z, tmp;
+  /* Crossings inside the interval, sorted; the others sink to the end as +inf. */
+  float s0 = tm.x > t0e && tm.x <= t1e ? tm.x : PRISM_INF;
+  float s1 = tm.y > t0e && tm.y <= t1e ? tm.y : PRISM_INF;
+  float s2 = tm.z > t0e && tm.z <= t1e ? tm.z : PRISM_INF;
   int a0 = 1, a1 = 2, a2 = 4, ta;
+  float tmp;
   if (s0 > s1) { tmp = s0; s0 = s1; s1 = tmp; ta = a0; a0 = a1; a1 = ta; }
   if (s1 > s2) { tmp = s1; s1 = s2; s2 = tmp; ta = a1; a1 = a2; a2 = ta; }
   if (s0 > s1) { tmp = s0; s0 = s1; s1 = tmp; ta = a0; a0 = a1; a1 = ta; }
-  float sv[3] = {s0, s1, s2};
-  int av[3] = {a0, a1, a2};
-  int count = 0;
-  float prev = t0;
-  for (int k = 0; k < 3; ++k) {
-    float s = sv[k];
-    if (!(s > t0e && s <= t1e)) continue;
-    float end = fmin(fmax(s, t0), t1);
-    out_bits[count] = bits;
-    out_t0[count] = prev;
-    out_t1[count] = end;
-    ++count;
-    prev = end;
-    bits ^= av[k];
-  }
-  out_bits[count] = bits;
-  out_t0[count] = prev;
-  out_t1[count] = t1;
-  return count + 1;
-}
-
-inline int octree_child(__global const OctreeNodeGpu* n, int octant) {
-  return n->first_child + popcount(n->child_mask & ((1 << octant) - 1));
-}
-
-/* Pushes the octants of an inner cell farthest first, so the nearest is on top. */
-inline void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv, float t0, float t1, int* stack_node,
-                        float* stack_t0, float* stack_t1, int* sp) {
-  int bits[4];
-  float s0[4], s1[4];
-  int count = octree_segments(n, o, inv, t0, t1, bits, s0, s1);
-  for (int k = count - 1; k >= 0; --k) {
-    if (!((n->child_mask >> bits[k]) & 1)) continue;
-    stack_node[*sp] = octree_child(n, bits[k]);
-    stack_t0[*sp] = s0[k];
-    stack_t1[*sp] = s1[k];
-    ++*sp;
+  float e0 = fmin(fmax(s0, t0), t1), e1 = fmin(fmax(s1, t0), t1), e2 = fmin(fmax(s2, t0), t1);
+  int b1 = bits ^ a0, b2 = b1 ^ a1, b3 = b2 ^ a2;
+  if (s2 != PRISM_INF) {
+    octree_push1(n, b3, e2, t1, stack_node, stack_t0, stack_t1, sp);
+    octree_push1(n, b2, e1, e2, stack_node, stack_t0, stack_t1, sp);
+    octree_push1(n, b1, e0, e1, stack_node, stack_t0, stack_t1, sp);
+    octree_push1(n, bits, t0, e0, stack_node, stack_t0, stack_t1, sp);
+  } else if (s1 != PRISM_INF) {
+    octree_push1(n, b2, e1, t1, stack_node, stack_t0, stack_t1, sp);
+    octree_push1(n, b1, e0, e1, stack_node, stack_t0, stack_t1, sp);
+    octree_push1(n, bits, t0, e0, stack_node, stack_t0, stack_t1, sp);
+  } else if (s0 != PRISM_INF) {
+    octree_push1(n, b1, e0, t1, stack_node, stack_t0, stack_t1, sp);
+    octree_push1(n, bits, t0, e0, stack_node, stack_t0, stack_t1, sp);
+  } else {
+    octree_push1(n, bits, t0, t1, stack_node, stack_t0, stack_t1, sp);
   }
 }
 

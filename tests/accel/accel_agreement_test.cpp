@@ -237,3 +237,32 @@ TEST_CASE("the structures answer empty scenes, planes only, and a single primiti
     }
   }
 }
+
+TEST_CASE("traceRays answers closest hits and occlusion with the tracing timed alone", "[accel]") {
+  AccelScene scene = meshScene("icosphere3", icosphere(3, 0, 0, 0, 1));
+  std::vector<QueryRay> rays = {
+      {0, 0, 5, 0, 0, 0, -1, INFINITY},  // hits the sphere's front near t = 4
+      {0, 0, 5, 0, 0, 0, 1, INFINITY},   // points away
+      {0, 0, 5, 0, 0, 0, -1, 3.5f},      // stops short
+      {3, 3, 3, 0, 1, 0, 0, INFINITY},   // passes beside
+  };
+  for (AccelKind kind : allAccelKinds()) {
+    INFO(accelName(kind));
+    TraceResult closest = traceRays(sharedContext(), scene.objects, kind, rays, false);
+    REQUIRE(closest.hits.size() == rays.size());
+    CHECK(closest.occluded.empty());
+    CHECK(closest.hits[0].prim >= 0);
+    CHECK(closest.hits[0].t == Approx(4.0).epsilon(0.01));
+    CHECK(closest.hits[0].u >= 0);
+    CHECK(closest.hits[0].v >= 0);
+    for (int i : {1, 2, 3}) {
+      CHECK(closest.hits[i].prim == -1);
+      CHECK(std::isinf(closest.hits[i].t));
+    }
+    CHECK(closest.trace_seconds > 0);
+    CHECK(closest.accel.primitives == (kind == AccelKind::None ? scene.objects.size() : scene.objects.size()));
+    TraceResult occluded = traceRays(sharedContext(), scene.objects, kind, rays, true);
+    CHECK(occluded.hits.empty());
+    CHECK(occluded.occluded == std::vector<std::uint8_t>{1, 0, 0, 0});
+  }
+}

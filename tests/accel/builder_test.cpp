@@ -1,0 +1,272 @@
+// The builders' output, read back from the device layouts: every primitive
+// that meets an octree or BSP cell (decided by brute force over all
+// primitives) is in that cell's leaf, no primitive is lost in an octant or
+// side that was not stored, the BVH holds each primitive exactly once inside
+// its boxes; names, statistics, determinism across thread counts, and
+// triangles lying exactly on the octree's splitting planes.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <functional>
+#include <set>
+
+#include "accel/accel_scenes.h"
+#include "accel/exact_predicates.h"
+#include "kernels/shared/bsp_node_gpu.h"
+#include "kernels/shared/bvh_node_gpu.h"
+#include "kernels/shared/octree_node_gpu.h"
+#include "render/ray_queries.h"
+#include "render/render_options.h"
+#include "support/shared_context.h"
+
+using namespace prism;
+using namespace prism::test;
+
+namespace {
+
+template <typename T>
+const T* nodesOf(const DeviceAccel& a) {
+  return reinterpret_cast<const T*>(a.nodes.data() + 2);
+}
+
+CellBox headerBox(const DeviceAccel& a) {
+  return {{a.nodes[0].v[0], a.nodes[0].v[1], a.nodes[0].v[2]}, {a.nodes[1].v[0], a.nodes[1].v[1], a.nodes[1].v[2]}};
+}
+
+std::set<int> packetPrims(const DeviceAccel& a, std::size_t start, std::size_t count) {
+  std::set<int> ids;
+  for (std::size_t p = start; p < start + count; ++p)
+    for (int k = 0; k < PACKET_LANES; ++k) {
+      int id = a.packets[p].prim[k];
+      if (id >= 0) ids.insert(id);
+      if (id <= -2) ids.insert(-id - 2);
+    }
+  return ids;
+}
+
+struct Cells {
+  std::vector<std::pair<CellBox, std::set<int>>> leaves;  // stored cells and their primitives
+  std::vector<CellBox> missing;                           // octants / sides with nothing stored
+};
+
+Cells octreeCells(const DeviceAccel& a) {
+  Cells out;
+  const OctreeNodeGpu* nodes = nodesOf<OctreeNodeGpu>(a);
+  std::function<void(int, CellBox)> walk = [&](int index, CellBox box) {
+    const OctreeNodeGpu& n = nodes[index];
+    if (!n.child_mask) {
+      out.leaves.push_back({box, packetPrims(a, n.packet_start, n.packet_count)});
+      return;
+    }
+    const float c[3] = {n.cx, n.cy, n.cz};
+    int child = n.first_child;
+    for (int k = 0; k < 8; ++k) {
+      CellBox o = box;
+      for (int axis = 0; axis < 3; ++axis) (k >> axis & 1 ? o.lo[axis] : o.hi[axis]) = c[axis];
+      if (n.child_mask >> k & 1)
+        walk(child++, o);
+      else
+        out.missing.push_back(o);
+    }
+  };
+  walk(0, headerBox(a));
+  return out;
+}
+
+Cells bspCells(const DeviceAccel& a) {
+  Cells out;
+  const BspNodeGpu* nodes = nodesOf<BspNodeGpu>(a);
+  std::function<void(int, CellBox)> walk = [&](int index, CellBox box) {
+    const BspNodeGpu& n = nodes[index];
+    int axis = n.word & 3;
+    if (axis == BSP_LEAF) {
+      out.leaves.push_back({box, packetPrims(a, n.word >> 2, n.payload)});
+      return;
+    }
+    float split;
+    std::memcpy(&split, &n.payload, sizeof split);
+    CellBox below = box, above = box;
+    below.hi[axis] = above.lo[axis] = split;
+    walk(index + 1, below);
+    walk(n.word >> 2, above);
+  };
+  walk(0, headerBox(a));
+  return out;
+}
+
+// Brute force: each primitive meeting a cell is in it; no primitive meets a
+// cell left out of the tree.
+void checkComplete(const std::vector<ObjectGpu>& objects, const Cells& cells) {
+  PrimitiveSet prims = gatherPrimitives(objects);
+  std::size_t lost = 0, checked = 0;
+  std::string first;
+  for (const auto& [box, ids] : cells.leaves)
+    for (std::size_t i = 0; i < prims.bounded.size(); ++i) {
+      int id = prims.bounded[i];
+      if (ids.count(id) || !overlapsCell(objects[id], prims.bounds[i], box, nullptr)) continue;
+      if (lost++ == 0) first = "primitive " + std::to_string(id) + " missing from a leaf it meets";
+    }
+  for (const CellBox& box : cells.missing)
+    for (std::size_t i = 0; i < prims.bounded.size(); ++i) {
+      ++checked;
+      if (overlapsCell(objects[prims.bounded[i]], prims.bounds[i], box, nullptr) && lost++ == 0)
+        first = "primitive " + std::to_string(prims.bounded[i]) + " meets a cell that was not stored";
+    }
+  INFO(cells.leaves.size() << " leaves, " << cells.missing.size() << " cells left out; " << first);
+  CHECK(lost == 0);
+}
+
+}  // namespace
+
+TEST_CASE("structure names parse, print and reject unknown names with the valid list", "[accel][builder]") {
+  for (AccelKind kind : allAccelKinds()) CHECK(parseAccelKind(accelName(kind)) == kind);
+  CHECK(allAccelKinds().size() == 4);
+  CHECK_THROWS_WITH(parseAccelKind("kdtree"), Catch::Contains("'kdtree'") && Catch::Contains("bvh") &&
+                                                  Catch::Contains("octree") && Catch::Contains("bsp") &&
+                                                  Catch::Contains("none"));
+  AccelKind k;
+  CHECK_FALSE(tryParseAccelKind("BVH", &k));
+  RenderOptions defaults;
+  CHECK(defaults.accel == AccelKind::Bvh);
+}
+
+TEST_CASE("every octree and BSP leaf holds every primitive that meets its cell", "[accel][builder]") {
+  AccelScene scene = mixedScene(800);
+  AccelBuildOptions small;
+  small.octree_leaf_prims = 4;  // deeper trees: more boundaries to get right
+  auto octree = buildAccel(AccelKind::Octree, scene.objects, small);
+  auto bsp = buildAccel(AccelKind::Bsp, scene.objects, small);
+  INFO(describeAccel(*octree));
+  INFO(describeAccel(*bsp));
+  CHECK(octree->stats.exact_tests > 0);
+  CHECK(octree->stats.straddling > 0);
+  CHECK(bsp->stats.straddling > 0);
+  checkComplete(scene.objects, octreeCells(*octree));
+  checkComplete(scene.objects, bspCells(*bsp));
+}
+
+TEST_CASE("the BVH holds each bounded primitive once, inside its boxes", "[accel][builder]") {
+  AccelScene scene = mixedScene(2000);
+  auto bvh = buildAccel(AccelKind::Bvh, scene.objects);
+  PrimitiveSet prims = gatherPrimitives(scene.objects);
+  std::vector<int> seen(scene.objects.size(), 0);
+  const BvhNodeGpu* nodes = nodesOf<BvhNodeGpu>(*bvh);
+  std::size_t outside = 0;
+  std::function<void(int)> walk = [&](int index) {
+    const BvhNodeGpu& n = nodes[index];
+    for (int i = 0; i < BVH_WIDTH; ++i) {
+      int code = n.child[i];
+      if (code > 0) walk(code);
+      if (code >= 0) continue;
+      int x = ~code;
+      for (int id : packetPrims(*bvh, x >> BVH_LEAF_COUNT_BITS, (x & (BVH_LEAF_MAX_PACKETS - 1)) + 1)) {
+        ++seen[id];
+        Aabb b;
+        REQUIRE(objectBounds(scene.objects[id], &b));
+        outside += b.lo[0] < n.lo_x[i] || b.hi[0] > n.hi_x[i] || b.lo[1] < n.lo_y[i] || b.hi[1] > n.hi_y[i] ||
+                   b.lo[2] < n.lo_z[i] || b.hi[2] > n.hi_z[i];
+      }
+    }
+  };
+  walk(0);
+  CHECK(outside == 0);
+  for (std::size_t i = 0; i < prims.bounded.size(); ++i) CHECK(seen[prims.bounded[i]] == 1);
+  for (int id : prims.unbounded) CHECK(seen[id] == 0);
+  CHECK(bvh->unbounded == prims.unbounded);
+  CHECK(bvh->stats.duplication == 1.0);
+  CHECK(bvh->stats.references == prims.bounded.size());
+}
+
+TEST_CASE("builds report their statistics", "[accel][builder]") {
+  AccelScene scene = meshScene("torus", bumpyTorus(20000));
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+    auto a = buildAccel(kind, scene.objects);
+    const AccelStats& s = a->stats;
+    INFO(describeAccel(*a));
+    CHECK(s.primitives == scene.objects.size());
+    CHECK(s.unbounded == 0);
+    CHECK(s.build_seconds > 0);
+    CHECK(s.bytes == a->nodes.size() * 16 + a->packets.size() * sizeof(TriPacketGpu));
+    CHECK(s.node_count >= s.leaf_count);
+    CHECK(s.leaf_count > 0);
+    CHECK(s.mean_prims_per_leaf > 1);
+    CHECK(s.sah_cost > 1);
+    CHECK(s.duplication >= 1);
+    CHECK(s.references >= s.primitives);
+    CHECK(s.max_depth > 1);
+    CHECK_THAT(a->kernel_options, Catch::Contains("-DPRISM_ACCEL_") && Catch::Contains("-DPRISM_ACCEL_STACK="));
+  }
+}
+
+TEST_CASE("builds are the same whatever the number of threads", "[accel][builder]") {
+  AccelScene scene = meshScene("torus", bumpyTorus(60000));
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+    AccelBuildOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    auto a = buildAccel(kind, scene.objects, one);
+    auto b = buildAccel(kind, scene.objects, two);
+    INFO(accelName(kind));
+    REQUIRE(a->nodes.size() == b->nodes.size());
+    REQUIRE(a->packets.size() == b->packets.size());
+    CHECK(std::memcmp(a->nodes.data(), b->nodes.data(), a->nodes.size() * sizeof(AccelWord)) == 0);
+    CHECK(std::memcmp(a->packets.data(), b->packets.data(), a->packets.size() * sizeof(TriPacketGpu)) == 0);
+  }
+}
+
+TEST_CASE("triangles lying exactly on the octree's splitting planes are found", "[accel][builder]") {
+  AccelScene scene = meshScene("soup", triangleSoup(3000, 21, 0.03f));
+  auto first = buildAccel(AccelKind::Octree, scene.objects);
+  const OctreeNodeGpu root = nodesOf<OctreeNodeGpu>(*first)[0];
+  REQUIRE(root.child_mask != 0);
+  const float c[3] = {root.cx, root.cy, root.cz};
+  // Small triangles in the three centre planes, well inside the scene's box,
+  // so the root cell (and so its centre) stays the same.
+  std::vector<int> on_plane;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int k = 0; k < 10; ++k) {
+      ObjectGpu g = identityObject(OBJECT_TRIANGLE, 0);
+      float a = 0.2f + 0.06f * k, b = 0.3f + 0.05f * k;
+      float pts[3][2] = {{a, b}, {a + 0.02f, b}, {a, b + 0.02f}};
+      for (int v = 0; v < 3; ++v) {
+        g.p[3 * v + axis] = c[axis];
+        g.p[3 * v + (axis + 1) % 3] = pts[v][0];
+        g.p[3 * v + (axis + 2) % 3] = pts[v][1];
+      }
+      on_plane.push_back(static_cast<int>(scene.objects.size()));
+      scene.objects.push_back(g);
+    }
+  auto octree = buildAccel(AccelKind::Octree, scene.objects);
+  const OctreeNodeGpu& again = nodesOf<OctreeNodeGpu>(*octree)[0];
+  REQUIRE(again.cx == c[0]);
+  REQUIRE(again.cy == c[1]);
+  REQUIRE(again.cz == c[2]);
+  checkComplete(scene.objects, octreeCells(*octree));
+
+  // Rays from both sides of each plane through each triangle's centroid find it.
+  std::vector<QueryRay> rays;
+  for (int id : on_plane) {
+    const float* p = scene.objects[id].p;
+    float m[3];
+    for (int a = 0; a < 3; ++a) m[a] = (p[a] + p[3 + a] + p[6 + a]) / 3;
+    int axis = p[0] == p[3] && p[0] == p[6] ? 0 : (p[1] == p[4] && p[1] == p[7] ? 1 : 2);
+    for (float side : {-1.0f, 1.0f}) {
+      QueryRay r{m[0], m[1], m[2], 0, 0, 0, 0, INFINITY};
+      (&r.ox)[axis] -= side * 2;
+      (&r.dx)[axis] = side;
+      rays.push_back(r);
+    }
+  }
+  RayQueryEngine none(sharedContext(), scene.objects, AccelKind::None);
+  std::vector<HitGpu> ref = none.intersect(rays);
+  for (AccelKind kind : {AccelKind::Octree, AccelKind::Bsp, AccelKind::Bvh}) {
+    RayQueryEngine engine(sharedContext(), scene.objects, kind);
+    std::vector<HitGpu> hits = engine.intersect(rays);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      INFO(accelName(kind) << " ray " << i);
+      CHECK(hits[i].prim == ref[i].prim);
+      CHECK(hits[i].t == ref[i].t);
+    }
+  }
+}
