@@ -11,11 +11,13 @@
 #include <vector>
 
 #include "accel_bench.h"
+#include "firsthit_bench.h"  // prism-bench firsthit: parses its own options
 
 namespace {
 
 const char* kUsage =
     "usage: prism-bench accel [options] [FILES...]\n"
+    "       prism-bench firsthit [options] [FILES...]   (see prism-bench firsthit --help)\n"
     "\n"
     "Builds each acceleration structure over each scene and traces the same rays\n"
     "through it and through Intel Embree (rtcIntersect1, as many threads as the\n"
@@ -72,7 +74,8 @@ int main(int argc, char** argv) {
     std::cout << kUsage;
     return args.empty() ? 2 : 0;
   }
-  if (args[0] != "accel") usageError("unknown command '" + args[0] + "' (expected accel)");
+  if (args[0] == "firsthit") return prism::bench::firstHitMain(args);
+  if (args[0] != "accel") usageError("unknown command '" + args[0] + "' (expected accel or firsthit)");
   prism::bench::AccelBenchOptions options;
   options.data_dir = PRISM_SOURCE_DIR "/../shared/data/meshes";
   options.command = "prism-bench";

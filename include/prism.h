@@ -207,15 +207,60 @@ PRISM_API PrismStatus prismParseAccel(const char* name, PrismAccel* accel);
 /* The lower-case name of a structure ("bvh"), or NULL for an unknown value. */
 PRISM_API const char* prismAccelName(PrismAccel accel);
 
+/* Anti-aliasing: where primary rays pass through each pixel (docs/sampling.md).
+ * AUTO: none at one sample per pixel, jitter above. */
+typedef enum PrismAa {
+  PRISM_AA_AUTO = 0,
+  PRISM_AA_NONE = 1,     /* the pixel centre; spp must be 1 */
+  PRISM_AA_GRID = 2,     /* n x n regular grid; spp = n^2 */
+  PRISM_AA_QUINCUNX = 3, /* pixel corners shared with the neighbours, plus the centre; spp must be 1 */
+  PRISM_AA_ADAPTIVE = 4, /* corners, subdivided where they differ by more than aa_threshold; spp must be 1 */
+  PRISM_AA_JITTER = 5,   /* one uniform point in each of spp strata */
+  PRISM_AA_POISSON = 6,  /* a Poisson-disk tile of spp points, randomly shifted per pixel */
+  PRISM_AA_RANDOM = 7    /* spp independent uniform points */
+} PrismAa;
+
+/* Reconstruction filter of the per-pixel modes (radius in pixels): box 0.5, tent 1,
+ * gaussian 1.5, mitchell 2. Quincunx always uses the tent, adaptive its area average. */
+typedef enum PrismFilter {
+  PRISM_FILTER_BOX = 0,
+  PRISM_FILTER_TENT = 1,
+  PRISM_FILTER_GAUSSIAN = 2,
+  PRISM_FILTER_MITCHELL = 3
+} PrismFilter;
+
+/* How primary visibility is found: the first-hit Z-buffer pass, traced rays, or
+ * AUTO (the Z-buffer whenever the camera allows it: no depth of field or motion blur). */
+typedef enum PrismFirstHit {
+  PRISM_FIRST_HIT_AUTO = 0,
+  PRISM_FIRST_HIT_ZBUFFER = 1,
+  PRISM_FIRST_HIT_TRACE = 2
+} PrismFirstHit;
+
+/* Parse a lower-case name ("auto", "none", "grid", "quincunx", "adaptive", "jitter",
+ * "poisson", "random"; "box", "tent", "gaussian", "mitchell"; "auto", "zbuffer",
+ * "trace"); the Name functions return it, or NULL for an unknown value. */
+PRISM_API PrismStatus prismParseAa(const char* name, PrismAa* aa);
+PRISM_API const char* prismAaName(PrismAa aa);
+PRISM_API PrismStatus prismParseFilter(const char* name, PrismFilter* filter);
+PRISM_API const char* prismFilterName(PrismFilter filter);
+PRISM_API PrismStatus prismParseFirstHit(const char* name, PrismFirstHit* first_hit);
+PRISM_API const char* prismFirstHitName(PrismFirstHit first_hit);
+
 typedef struct PrismRenderOptions {
   size_t struct_size;  /* sizeof(PrismRenderOptions); set by prismGetRenderOptions */
   uint32_t width;      /* film size in pixels */
   uint32_t height;
-  uint32_t spp;        /* samples per pixel; 1 traces through pixel centres */
+  uint32_t spp;        /* samples per pixel of grid, jitter, poisson, random; 1 for the other modes */
   uint32_t max_depth;  /* levels of reflected/refracted rays after the primary ray */
   float min_weight;    /* adaptive depth control: a ray whose weight falls under this is not traced */
-  uint64_t seed;       /* seeds the sample positions when spp > 1 */
+  uint64_t seed;       /* seeds the sample positions (jitter, poisson, random) */
   uint32_t accel;      /* a PrismAccel */
+  uint32_t aa;         /* a PrismAa */
+  uint32_t filter;     /* a PrismFilter */
+  uint32_t first_hit;  /* a PrismFirstHit */
+  float aa_threshold;  /* adaptive: corner colours differing by more than this split a square (default 0.1) */
+  uint32_t aa_max_level; /* adaptive: most subdivisions of a pixel's side, 0..8 (default 2) */
 } PrismRenderOptions;
 
 /* Fills `options` with the scene's own settings (film and render blocks). */
@@ -233,6 +278,8 @@ typedef struct PrismRenderStats {
   uint64_t rays_per_depth[32]; /* camera + secondary rays traced at each depth (0 = primary) */
   uint32_t accel;              /* the PrismAccel used */
   double accel_build_seconds;  /* building the spatial index on the host */
+  double rays_per_pixel;       /* primary samples / pixels (about 2 for quincunx, >= 1 for adaptive) */
+  uint32_t first_hit_used;     /* PRISM_FIRST_HIT_ZBUFFER or PRISM_FIRST_HIT_TRACE */
 } PrismRenderStats;
 
 /* Renders `scene` with `options` (NULL: the scene's own) into `rgba`, a caller-owned
@@ -253,7 +300,9 @@ PRISM_API PrismStatus prismGetAovChannels(PrismAov aov, uint32_t* channels);
 /* Parses "depth", "normal", "primid" or "albedo". */
 PRISM_API PrismStatus prismParseAov(const char* name, PrismAov* aov);
 /* Copies an AOV of the context's last render into `out` (width*height*channels floats;
- * `count` is the buffer's size in floats). AOVs come from each pixel's first sample. */
+ * `count` is the buffer's size in floats). AOVs come from one sample of each pixel: the
+ * centre (none, quincunx), the first sample (grid, jitter, poisson, random), or the
+ * top-left corner (adaptive). */
 PRISM_API PrismStatus prismGetAov(PrismContext context, PrismAov aov, float* out, size_t count);
 
 /* ---- ray queries ------------------------------------------------------------------ */

@@ -1,17 +1,18 @@
-/* accumulate: adds a queue of contributions, sorted by pixel, into the film.
- * The first work-item of each run of equal pixels sums the run in queue order,
- * so each pixel has one writer per launch and the sum is the same on every run
- * (float atomics would make the order, and so the image, vary). */
+/* accumulate: adds a queue of contributions, sorted by film key, into the film
+ * (4 floats per key: in a render, one entry per primary sample). The first
+ * work-item of each run of equal keys sums the run in queue order, so each entry
+ * has one writer per launch and the sum is the same on every run (float atomics
+ * would make the order, and so the image, vary). */
 #include "shared/contribution_gpu.h"
 
 __kernel void accumulate(__global const ContributionGpu* c, int count, __global float* film) {
   int k = get_global_id(0);
   if (k >= count) return;
-  int pixel = c[k].pixel;
-  if (k > 0 && c[k - 1].pixel == pixel) return;
+  int key = c[k].pixel;
+  if (k > 0 && c[k - 1].pixel == key) return;
   float4 sum = (float4)(0.0f);
-  for (int j = k; j < count && c[j].pixel == pixel; ++j) sum += (float4)(c[j].r, c[j].g, c[j].b, c[j].a);
-  __global float* f = film + 4 * pixel;
+  for (int j = k; j < count && c[j].pixel == key; ++j) sum += (float4)(c[j].r, c[j].g, c[j].b, c[j].a);
+  __global float* f = film + 4 * (size_t)key;
   f[0] += sum.x;
   f[1] += sum.y;
   f[2] += sum.z;

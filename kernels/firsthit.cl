@@ -2,7 +2,8 @@
  * position it finds the nearest primitive along the sample's primary ray, testing
  * only the candidates binned on the host into the sample's screen tile
  * (host/render/firsthit.cpp) plus the unbounded ones every tile shares (planes,
- * primitives crossing the camera plane). The test is the tracer's own
+ * primitives crossing the camera plane), after cheap tests of the sample against
+ * the candidate's padded screen bounds and depth bound. The ray test is the tracer's own
  * object_intersect, so depth and id are what tracing the ray gives; equal depths go
  * to the lower primitive index, as in a brute-force loop over the scene. */
 #include "geometry/object.h"
@@ -22,8 +23,9 @@ inline void firsthit_test(__global const ObjectGpu* objects, int prim, float3 o,
 
 __kernel void firsthit(__global const CameraGpu* camera, __global const ObjectGpu* objects, int tile_size,
                        int tiles_x, int tiles_y, __global const int* tile_start, __global const int* tile_prims,
-                       __global const int* global_prims, int global_count, __global const float* xy, int count,
-                       __global HitGpu* hits) {
+                       __global const float* tile_bounds, __global const float* tile_depths,
+                       __global const int* global_prims, int global_count,
+                       __global const float* xy, int count, __global HitGpu* hits) {
   int k = get_global_id(0);
   if (k >= count) return;
   float x = xy[2 * k], y = xy[2 * k + 1];
@@ -38,7 +40,20 @@ __kernel void firsthit(__global const CameraGpu* camera, __global const ObjectGp
   hit.prim = -1;
   hit.u = 0.0f;
   hit.v = 0.0f;
-  for (int n = tile_start[tile]; n < tile_start[tile + 1]; ++n) firsthit_test(objects, tile_prims[n], o, d, &hit);
+  /* The unbounded candidates first: a near hit among them lets the depth test
+   * below skip tile candidates behind it. */
   for (int n = 0; n < global_count; ++n) firsthit_test(objects, global_prims[n], o, d, &hit);
+  /* A hit at t lies at view depth t * cos(angle to the forward axis). */
+  float cos_forward = dot(d, load3g(camera->forward));
+  for (int n = tile_start[tile]; n < tile_start[tile + 1]; ++n) {
+    /* The candidate's padded screen bounds: a sample outside them cannot see it
+     * (the pad, 0.1 pixel, is far more than the ray's float error). */
+    float4 b = vload4(n, tile_bounds);
+    if (x < b.x || y < b.y || x > b.z || y > b.w) continue;
+    /* Nor can a candidate wholly behind the hit found so far (its depth bound is
+     * 1e-4 nearer than the hull, far more than float error, so ties still get tested). */
+    if (tile_depths[n] > hit.t * cos_forward) continue;
+    firsthit_test(objects, tile_prims[n], o, d, &hit);
+  }
   hits[k] = hit;
 }

@@ -34,9 +34,10 @@ __kernel void resolve(int mode, int filter, int width, int height, int spp, __gl
   float wsum = 0.0f;
   for (int pj = max(0, j - reach); pj <= min(height - 1, j + reach); ++pj)
     for (int pi = max(0, i - reach); pi <= min(width - 1, i + reach); ++pi) {
-      int base = (pj * width + pi) * spp;
+      int base = (pj * width + pi) * spp; /* the host keeps the sample count under 2^31 */
       for (int s = 0; s < spp; ++s) {
-        float w = filter_weight(filter, xy[2 * (base + s)] - cx, xy[2 * (base + s) + 1] - cy);
+        size_t at = 2 * (size_t)(base + s);
+        float w = filter_weight(filter, xy[at] - cx, xy[at + 1] - cy);
         if (w != 0.0f) {
           sum += w * vload4(base + s, radiance);
           wsum += w;

@@ -5,7 +5,8 @@
  *   - children[2k], children[2k+1]: the reflected and the refracted ray, each
  *     with weight = parent weight x coefficient, or empty slots when the branch
  *     ends (max depth reached, coefficient zero, weight under min_weight).
- * Primary rays of sample 0 also write the AOVs of their pixel. */
+ * Primary rays with an AOV pixel (ray.aov_pixel >= 0, one sample per pixel
+ * chosen by the sampler) also write that pixel's AOVs. */
 #include "geometry/object.h"
 #include "shading/local.h"
 #include "shading/optics.h"
@@ -45,7 +46,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   HitGpu hit = hits[k];
   float3 weight = ray_weight(ray);
   bool primary = ray.kind == RAY_KIND_PRIMARY;
-  bool writes_aovs = primary && ray.sample == 0;
+  bool writes_aovs = primary && ray.aov_pixel >= 0;
 
   for (int l = 0; l < light_count; ++l) shadows[k * light_count + l] = ray_empty();
   children[2 * k] = ray_empty();
@@ -54,7 +55,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   if (hit.prim < 0) {
     emit[k] = contribution(weight * background.xyz, 0.0f, ray.pixel);
     if (writes_aovs)
-      write_aovs(ray.pixel, PRISM_INF, (float3)(0.0f), -1, (float3)(0.0f), aov_depth, aov_normal, aov_primid,
+      write_aovs(ray.aov_pixel, PRISM_INF, (float3)(0.0f), -1, (float3)(0.0f), aov_depth, aov_normal, aov_primid,
                  aov_albedo);
     return;
   }
@@ -76,7 +77,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   float3 p_out = p + eps * nf; /* just off the surface, on the viewer's side */
 
   emit[k] = contribution(weight * load3g(m->ambient) * tex * ambient.xyz, primary ? 1.0f : 0.0f, ray.pixel);
-  if (writes_aovs) write_aovs(ray.pixel, hit.t, nf, hit.prim, kd, aov_depth, aov_normal, aov_primid, aov_albedo);
+  if (writes_aovs) write_aovs(ray.aov_pixel, hit.t, nf, hit.prim, kd, aov_depth, aov_normal, aov_primid, aov_albedo);
 
   for (int l = 0; l < light_count; ++l) {
     float3 to_light = load3g(lights[l].position) - p_out;

@@ -44,6 +44,19 @@ PrismDeviceInfo toInfo(const DeviceDescription& d) {
   return info;
 }
 
+static_assert(PRISM_AA_NONE == static_cast<int>(AaMode::None) + 1 && PRISM_AA_GRID == static_cast<int>(AaMode::Grid) + 1 &&
+                  PRISM_AA_QUINCUNX == static_cast<int>(AaMode::Quincunx) + 1 &&
+                  PRISM_AA_ADAPTIVE == static_cast<int>(AaMode::Adaptive) + 1 &&
+                  PRISM_AA_JITTER == static_cast<int>(AaMode::Jitter) + 1 &&
+                  PRISM_AA_POISSON == static_cast<int>(AaMode::Poisson) + 1 &&
+                  PRISM_AA_RANDOM == static_cast<int>(AaMode::Random) + 1,
+              "PrismAa is AaMode + 1");
+static_assert(PRISM_FILTER_BOX == static_cast<int>(FilterKind::Box) &&
+                  PRISM_FILTER_TENT == static_cast<int>(FilterKind::Tent) &&
+                  PRISM_FILTER_GAUSSIAN == static_cast<int>(FilterKind::Gaussian) &&
+                  PRISM_FILTER_MITCHELL == static_cast<int>(FilterKind::Mitchell),
+              "PrismFilter is FilterKind");
+
 RenderOptions fromC(const PrismRenderOptions& o) {
   RenderOptions r;
   r.width = static_cast<int>(std::min<uint32_t>(o.width, std::numeric_limits<int>::max()));
@@ -55,7 +68,25 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   const char* accel = prismAccelName(static_cast<PrismAccel>(o.accel));
   if (!accel) throw std::invalid_argument("render options: unknown accel value " + std::to_string(o.accel));
   r.accel = parseAccelKind(accel);
+  // PrismAa is AaMode + 1, with 0 for the default (none at spp 1, jitter above).
+  if (o.aa > PRISM_AA_RANDOM) throw std::invalid_argument("render options: unknown aa value " + std::to_string(o.aa));
+  if (o.aa != PRISM_AA_AUTO) r.aa = static_cast<AaMode>(o.aa - 1);
+  if (o.filter > PRISM_FILTER_MITCHELL)
+    throw std::invalid_argument("render options: unknown filter value " + std::to_string(o.filter));
+  r.filter = static_cast<FilterKind>(o.filter);
+  const char* first_hit = prismFirstHitName(static_cast<PrismFirstHit>(o.first_hit));
+  if (!first_hit)
+    throw std::invalid_argument("render options: unknown first_hit value " + std::to_string(o.first_hit));
+  r.first_hit = parseFirstHitMode(first_hit);
+  r.aa_threshold = o.aa_threshold;
+  r.aa_max_level = static_cast<int>(std::min<uint32_t>(o.aa_max_level, std::numeric_limits<int>::max()));
   return r;
+}
+
+PrismFirstHit toC(FirstHitMode mode) {
+  PrismFirstHit out = PRISM_FIRST_HIT_AUTO;
+  prismParseFirstHit(firstHitName(mode), &out);
+  return out;
 }
 
 PrismStatus loadInto(Scene scene, PrismScene* out) {
@@ -188,6 +219,11 @@ PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions
   PrismAccel accel = PRISM_ACCEL_BVH;
   prismParseAccel(accelName(r.accel), &accel);
   options->accel = accel;
+  options->aa = r.aa ? static_cast<uint32_t>(*r.aa) + 1 : static_cast<uint32_t>(PRISM_AA_AUTO);
+  options->filter = static_cast<uint32_t>(r.filter);
+  options->first_hit = toC(r.first_hit);
+  options->aa_threshold = static_cast<float>(r.aa_threshold);
+  options->aa_max_level = static_cast<uint32_t>(r.aa_max_level);
   return PRISM_OK;
 }
 
@@ -206,7 +242,11 @@ PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const 
     if (context->progress)
       progress = [context](double f) { return context->progress(context->progress_user, f) == 0; };
     context->has_render = false;
-    context->last = context->renderer->render(scene->scene, opts, progress);
+    try {
+      context->last = context->renderer->render(scene->scene, opts, progress);
+    } catch (const FilmTooLarge& e) {
+      return fail(PRISM_ERROR_OUT_OF_MEMORY, e.what());
+    }
     context->has_render = true;
     const RenderResult& r = context->last;
     std::memcpy(rgba, r.rgba.data(), r.rgba.size() * sizeof(float));
@@ -226,6 +266,8 @@ PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const 
       prismParseAccel(accelName(r.stats.accel), &accel);
       stats->accel = accel;
       stats->accel_build_seconds = r.stats.accel_stats.build_seconds;
+      stats->rays_per_pixel = r.stats.rays_per_pixel;
+      stats->first_hit_used = toC(r.stats.first_hit);
     }
     return PRISM_OK;
   });

@@ -77,18 +77,45 @@ Output:
                       albedo  diffuse colour at the hit, 0 on a miss (3 channels)
                     depth and primid need a float format: .exr, .pfm or .tif
                     (.hdr works but turns +inf and -1 into other values; .png is
-                    refused). AOVs come from each pixel's first sample.
+                    refused). AOVs come from one sample of each pixel: the centre
+                    (none, quincunx), the first sample (grid, jitter, poisson,
+                    random) or the top-left corner (adaptive).
 
 Image and sampling (default: the scene's value):
   --width W         image width in pixels (W >= 1)
   --height H        image height in pixels (H >= 1)
-  --spp N           samples per pixel (N >= 1); with 1, rays pass through pixel centres
+  --spp N           samples per pixel (N >= 1) for --aa grid, jitter, poisson and random;
+                    none, quincunx and adaptive place their own samples (spp 1)
   --max-depth D     levels of reflected and refracted rays after the primary ray
                     (0: primary rays and shadows only)
   --min-weight X    adaptive depth control: a ray whose weight (its share of the pixel)
                     falls below X is not traced; 0 traces every ray to --max-depth
-  --seed S          seed of the sample positions when N > 1 (0 to 2^64-1). The same
-                    scene, seed and device give the same image, bit for bit.
+  --seed S          seed of the sample positions (jitter, poisson, random; 0 to
+                    2^64-1). The same scene, seed and device give the same image,
+                    bit for bit.
+
+Anti-aliasing (default: the scene's film block; see docs/sampling.md):
+  --aa MODE         where primary rays pass through each pixel:
+                      none      the pixel centre (the default at --spp 1)
+                      grid      the centres of an n x n grid (--spp n*n)
+                      quincunx  the 4 corners, shared with the neighbours, and the
+                                centre: (W+1)(H+1) + W*H rays, about 2 per pixel
+                      adaptive  the corners, subdivided where they differ by more
+                                than --aa-threshold, down to --aa-max-level
+                      jitter    one random point in each of N strata (the default
+                                when --spp is above 1)
+                      poisson   a Poisson-disk pattern of N points (N <= 4096),
+                                shifted randomly in each pixel
+                      random    N independent random points
+                      auto      none at --spp 1, jitter above (the default)
+  --filter F        how samples become pixels: box (radius 0.5, the mean of the
+                    pixel's samples; default), tent (1), gaussian (1.5) or mitchell (2).
+                    Quincunx always uses its tent weights (centre 1/2, corners 1/8),
+                    adaptive its area average.
+  --aa-threshold X  adaptive: split a square whose corner colours differ by more than
+                    X in some channel (default 0.1)
+  --aa-max-level N  adaptive: at most N splits of a pixel's side, 0..8 (default 2:
+                    up to 5 x 5 points a pixel)
 
 Camera (default: the scene's camera):
   --camera-pos X,Y,Z   where the camera stands
@@ -99,6 +126,10 @@ Camera (default: the scene's camera):
 Speed:
   --accel A         spatial index for ray queries: bvh (default), octree, bsp, or
                     none (every ray against every primitive)
+  --first-hit M     how primary visibility is found: zbuffer (a first-hit pass over
+                    screen tiles of primitives, no ray traversal), trace (primary
+                    rays through the --accel structure), or auto (default: zbuffer
+                    whenever the camera allows it). Both give the same image.
 
 Device:
   --device D        the OpenCL device: an index from 'prism devices', 'cpu', 'gpu', or
@@ -114,8 +145,9 @@ Messages:
 
 While rendering, a progress bar appears on stderr if it is a terminal and the render
 takes longer than a second; Ctrl-C stops the render and writes nothing. At the end
-prism prints one summary line on stdout: size, samples, device, time, rays traced by
-kind, Mrays/s and the output file. Warnings about the scene (unknown keys and the
+prism prints one summary line on stdout: size, samples, device, time, anti-aliasing,
+primary rays per pixel, how first hits were found, rays traced by kind, Mrays/s and
+the output file. Warnings about the scene (unknown keys and the
 like) go to stderr as "prism: warning: ...".
 
 Options take their value as '--spp 16' or '--spp=16'.
@@ -124,6 +156,8 @@ Examples:
   prism render scenes/whitted.json -o whitted.png
   prism render scenes/whitted.json -o preview.png --width 320 --height 180 --spp 1
   prism render scenes/whitted.json -o final.exr --spp 64 --max-depth 8 --seed 7
+  prism render scenes/whitted.json -o smooth.png --aa quincunx
+  prism render scenes/whitted.json -o fine.png --aa grid --spp 16 --filter mitchell
   prism render scenes/whitted.json -o normals.png --aov normal
   prism render scenes/whitted.json -o high.png --camera-pos 0,6,9 --fov 35
   prism render scenes/whitted.json -o out.png --device 1 --no-cache

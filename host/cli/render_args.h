@@ -23,6 +23,11 @@ struct RenderRequest {
   std::string device;  // "" for the library's default
   std::optional<PrismAov> aov;
   std::optional<PrismAccel> accel;
+  std::optional<PrismAa> aa;
+  std::optional<PrismFilter> filter;
+  std::optional<float> aa_threshold;
+  std::optional<uint32_t> aa_max_level;
+  std::optional<PrismFirstHit> first_hit;
   std::optional<std::array<float, 3>> camera_pos, camera_look, camera_up;
   std::optional<float> fov;
   bool use_kernel_cache = true;

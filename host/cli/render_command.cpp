@@ -43,6 +43,30 @@ void applyOverrides(const RenderRequest& request, PrismRenderOptions& options) {
   if (request.min_weight) options.min_weight = *request.min_weight;
   if (request.seed) options.seed = *request.seed;
   if (request.accel) options.accel = *request.accel;
+  if (request.aa) {
+    options.aa = *request.aa;
+    // None, quincunx and adaptive place their own samples: a scene's spp does not
+    // apply to them (an explicit --spp does, and was checked).
+    const bool own_samples = *request.aa == PRISM_AA_NONE || *request.aa == PRISM_AA_QUINCUNX ||
+                             *request.aa == PRISM_AA_ADAPTIVE;
+    if (own_samples && !request.spp) options.spp = 1;
+  }
+  if (request.filter) options.filter = *request.filter;
+  if (request.aa_threshold) options.aa_threshold = *request.aa_threshold;
+  if (request.aa_max_level) options.aa_max_level = *request.aa_max_level;
+  if (request.first_hit) options.first_hit = *request.first_hit;
+}
+
+// The sampling in words for the summary: "jitter, box filter", "quincunx (tent)", "adaptive".
+std::string samplingText(const PrismRenderOptions& options) {
+  PrismAa aa = static_cast<PrismAa>(options.aa);
+  if (aa == PRISM_AA_AUTO) aa = options.spp > 1 ? PRISM_AA_JITTER : PRISM_AA_NONE;
+  const char* name = prismAaName(aa);
+  std::string text = std::string("aa ") + (name ? name : "?");
+  if (aa == PRISM_AA_QUINCUNX) return text + " (tent)";
+  if (aa == PRISM_AA_ADAPTIVE || aa == PRISM_AA_NONE) return text;
+  const char* filter = prismFilterName(static_cast<PrismFilter>(options.filter));
+  return text + ", " + (filter ? filter : "?") + " filter";
 }
 
 // --camera-pos/--camera-look/--camera-up/--fov replace the scene's values; the
@@ -118,12 +142,15 @@ void printSummary(const RenderRequest& request, const PrismRenderOptions& option
   const uint64_t total = stats.primary_rays + stats.reflected_rays + stats.refracted_rays + stats.shadow_rays;
   const double mrays = stats.seconds > 0.0 ? static_cast<double>(total) / stats.seconds / 1e6 : 0.0;
   const char* accel = prismAccelName(static_cast<PrismAccel>(stats.accel));
+  const char* first_hit = prismFirstHitName(static_cast<PrismFirstHit>(stats.first_hit_used));
   std::printf(
       "prism: rendered %ux%u at %u spp on '%s' with %s (built in %.2f s) in %.2f s (kernels %.2f s): "
+      "%s, %.3f rays/pixel, first hit by %s; "
       "%llu primary, %llu reflected, %llu refracted, %llu shadow rays, %.2f Mrays/s -> %s\n",
       static_cast<unsigned>(options.width), static_cast<unsigned>(options.height),
       static_cast<unsigned>(options.spp), device.name, accel ? accel : "?", stats.accel_build_seconds,
-      stats.seconds, stats.kernel_build_seconds, static_cast<unsigned long long>(stats.primary_rays),
+      stats.seconds, stats.kernel_build_seconds, samplingText(options).c_str(), stats.rays_per_pixel,
+      first_hit ? first_hit : "?", static_cast<unsigned long long>(stats.primary_rays),
       static_cast<unsigned long long>(stats.reflected_rays), static_cast<unsigned long long>(stats.refracted_rays),
       static_cast<unsigned long long>(stats.shadow_rays), mrays, request.output_path.c_str());
 }

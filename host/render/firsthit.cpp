@@ -33,6 +33,7 @@ struct Projector {
 
 struct ScreenBox {
   double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
+  double zmin = kInf;  // nearest view depth (along the camera's forward axis) of the hull
   void add(double x, double y) {
     x0 = std::min(x0, x);
     x1 = std::max(x1, x);
@@ -54,6 +55,7 @@ Placement projectHull(const Projector& cam, const Vec3* pts, int n, const int (*
   for (int i = 0; i < n; ++i) {
     z[i] = dot(pts[i] - cam.o, cam.f);
     front = front || z[i] > 0;
+    box.zmin = std::min(box.zmin, z[i]);
   }
   if (!front) return Placement::Culled;
   auto openTowards = [&](const Vec3& q) {
@@ -90,7 +92,8 @@ const int kBoxEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                               {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 
 // Where one primitive goes; for Tiles, the inclusive tile rectangle.
-Placement place(const ObjectGpu& ob, const Projector& cam, int tile, int tiles_x, int tiles_y, int rect[4]) {
+Placement place(const ObjectGpu& ob, const Projector& cam, int tile, int tiles_x, int tiles_y, int rect[4],
+                float bounds[5]) {
   if (ob.type != OBJECT_TRIANGLE && ob.type != OBJECT_SPHERE && ob.type != OBJECT_BOX)
     return Placement::Global;  // planes, and any kind this pass does not know
   // The kernels intersect in object space when has_transform is set (smooth
@@ -133,6 +136,14 @@ Placement place(const ObjectGpu& ob, const Projector& cam, int tile, int tiles_x
   box.x1 += kPadPixels;
   box.y1 += kPadPixels;
   if (!(box.x1 >= 0 && box.x0 <= cam.w && box.y1 >= 0 && box.y0 <= cam.h)) return Placement::Culled;
+  // As floats, rounded outwards (the pad dwarfs the rounding; this keeps it so).
+  bounds[0] = std::nextafter(static_cast<float>(box.x0), -std::numeric_limits<float>::infinity());
+  bounds[1] = std::nextafter(static_cast<float>(box.y0), -std::numeric_limits<float>::infinity());
+  bounds[2] = std::nextafter(static_cast<float>(box.x1), std::numeric_limits<float>::infinity());
+  bounds[3] = std::nextafter(static_cast<float>(box.y1), std::numeric_limits<float>::infinity());
+  // The hull's nearest view depth, rounded down and 1e-4 nearer still: no point of
+  // the primitive, so no hit, is nearer than that along any ray.
+  bounds[4] = box.zmin > 0 ? std::nextafter(static_cast<float>(box.zmin * (1 - 1e-4)), 0.0f) : 0.0f;
   auto tileOf = [tile](double v, int count) {
     double t = std::floor(v / tile);
     return static_cast<int>(std::clamp(t, 0.0, static_cast<double>(count - 1)));
@@ -156,7 +167,7 @@ Buffer upload(Context& context, const std::vector<T>& v) {
 }  // namespace
 
 int autoTileSize(std::size_t primitives, int width, int height) {
-  constexpr double kTargetPerTile = 32;
+  constexpr double kTargetPerTile = 8;
   double ideal = std::sqrt(kTargetPerTile * width * height / std::max<double>(1, static_cast<double>(primitives)));
   int tile = 2;
   while (tile < 32 && 2 * tile <= ideal) tile *= 2;
@@ -176,10 +187,12 @@ TileBins binPrimitives(const GpuScene& scene, int tile_size) {
 
   // Pass 1: each primitive's tile rectangle, and the count of entries per tile.
   std::vector<std::int32_t> rects(4 * n);
+  std::vector<float> bounds(5 * n);
   std::vector<std::uint8_t> where(n);
   std::vector<std::int64_t> counts(bins.tileCount() + 1, 0);
   for (size_t k = 0; k < n; ++k) {
-    Placement p = place(scene.objects[k], cam, bins.tile_size, bins.tiles_x, bins.tiles_y, &rects[4 * k]);
+    Placement p =
+        place(scene.objects[k], cam, bins.tile_size, bins.tiles_x, bins.tiles_y, &rects[4 * k], &bounds[5 * k]);
     where[k] = static_cast<std::uint8_t>(p);
     if (p == Placement::Culled) {
       ++bins.culled;
@@ -204,13 +217,18 @@ TileBins binPrimitives(const GpuScene& scene, int tile_size) {
     total += c_t;
   }
   bins.tile_prims.resize(static_cast<size_t>(total));
+  bins.tile_bounds.resize(4 * static_cast<size_t>(total));
+  bins.tile_depths.resize(static_cast<size_t>(total));
   for (size_t k = 0; k < n; ++k) {
     if (where[k] != static_cast<std::uint8_t>(Placement::Tiles)) continue;
     const std::int32_t* r = &rects[4 * k];
     for (int ty = r[1]; ty <= r[3]; ++ty)
-      for (int tx = r[0]; tx <= r[2]; ++tx)
-        bins.tile_prims[static_cast<size_t>(counts[static_cast<size_t>(ty) * bins.tiles_x + tx]++)] =
-            static_cast<std::int32_t>(k);
+      for (int tx = r[0]; tx <= r[2]; ++tx) {
+        const size_t at = static_cast<size_t>(counts[static_cast<size_t>(ty) * bins.tiles_x + tx]++);
+        bins.tile_prims[at] = static_cast<std::int32_t>(k);
+        std::copy(&bounds[5 * k], &bounds[5 * k] + 4, &bins.tile_bounds[4 * at]);
+        bins.tile_depths[at] = bounds[5 * k + 4];
+      }
   }
   return bins;
 }
@@ -224,6 +242,8 @@ void FirstHitPass::prepare(const GpuScene& scene, int tile_size) {
   m_camera.write(&scene.camera, sizeof(CameraGpu));
   m_tile_start = upload(m_context, m_bins.tile_start);
   m_tile_prims = upload(m_context, m_bins.tile_prims);
+  m_tile_bounds = upload(m_context, m_bins.tile_bounds);
+  m_tile_depths = upload(m_context, m_bins.tile_depths);
   m_global_prims = upload(m_context, m_bins.global_prims);
 }
 
@@ -238,6 +258,8 @@ void FirstHitPass::run(const Buffer& objects, const Buffer& xy, int count, Buffe
       .arg(static_cast<cl_int>(m_bins.tiles_y))
       .arg(m_tile_start)
       .arg(m_tile_prims)
+      .arg(m_tile_bounds)
+      .arg(m_tile_depths)
       .arg(m_global_prims)
       .arg(static_cast<cl_int>(m_bins.global_prims.size()))
       .arg(xy)

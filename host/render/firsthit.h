@@ -24,13 +24,21 @@ struct TileBins {
   int tiles_x = 0, tiles_y = 0;
   std::vector<std::int32_t> tile_start;    // tiles_x * tiles_y + 1 offsets into tile_prims, row by row
   std::vector<std::int32_t> tile_prims;    // each tile's candidates, ascending primitive index
+  // Per entry of tile_prims, 4 floats: the candidate's padded screen bounds
+  // x0, y0, x1, y1 (film coordinates; infinite where its image is unbounded). The
+  // kernel skips a candidate whose bounds miss the sample before any ray test.
+  std::vector<float> tile_bounds;
+  // Per entry: a lower bound on the candidate's view depth (distance along the
+  // camera's forward axis; 0 where it reaches the camera plane). The kernel skips a
+  // candidate that cannot come nearer than the hit it already has.
+  std::vector<float> tile_depths;
   std::vector<std::int32_t> global_prims;  // candidates of every tile: planes, primitives crossing the camera plane
   std::size_t culled = 0;                  // behind the camera or off the film: in no list
 
   std::size_t tileCount() const { return static_cast<std::size_t>(tiles_x) * tiles_y; }
 };
 
-// Tile side chosen from the number of primitives to bin: about 32 candidates a
+// Tile side chosen from the number of primitives to bin: about 8 candidates a
 // tile on average, a power of two in 2..32 pixels.
 int autoTileSize(std::size_t primitives, int width, int height);
 
@@ -57,7 +65,7 @@ class FirstHitPass {
   Context& m_context;
   cl_kernel m_kernel;
   TileBins m_bins;
-  Buffer m_camera, m_tile_start, m_tile_prims, m_global_prims;
+  Buffer m_camera, m_tile_start, m_tile_prims, m_tile_bounds, m_tile_depths, m_global_prims;
 };
 
 // Convenience for tests and tools: bins, uploads and runs in one call.

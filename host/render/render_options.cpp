@@ -6,6 +6,25 @@
 
 namespace prism {
 
+FirstHitMode parseFirstHitMode(const std::string& name) {
+  if (name == "auto") return FirstHitMode::Auto;
+  if (name == "zbuffer") return FirstHitMode::ZBuffer;
+  if (name == "trace") return FirstHitMode::Trace;
+  throw std::invalid_argument("unknown first-hit mode '" + name + "' (valid: auto, zbuffer, trace)");
+}
+
+const char* firstHitName(FirstHitMode mode) {
+  switch (mode) {
+    case FirstHitMode::ZBuffer:
+      return "zbuffer";
+    case FirstHitMode::Trace:
+      return "trace";
+    case FirstHitMode::Auto:
+      break;
+  }
+  return "auto";
+}
+
 RenderOptions RenderOptions::fromScene(const Scene& scene) {
   RenderOptions o;
   o.width = scene.film.width;
@@ -15,7 +34,22 @@ RenderOptions RenderOptions::fromScene(const Scene& scene) {
   o.min_weight = scene.render.min_weight;
   o.seed = scene.render.seed;
   o.accel = parseAccelKind(scene.render.accel);
+  if (!scene.film.aa.empty() && scene.film.aa != "auto") o.aa = parseAaMode(scene.film.aa);
+  o.filter = parseFilterKind(scene.film.filter);
+  o.aa_threshold = scene.film.aa_threshold;
+  o.aa_max_level = scene.film.aa_max_level;
+  o.first_hit = parseFirstHitMode(scene.render.first_hit);
   return o;
+}
+
+SamplingOptions RenderOptions::sampling() const {
+  SamplingOptions s;
+  s.mode = aaMode();
+  s.filter = filter;
+  s.spp = spp;
+  s.adaptive_threshold = aa_threshold;
+  s.adaptive_max_level = aa_max_level;
+  return s;
 }
 
 void RenderOptions::validate() const {
@@ -26,6 +60,16 @@ void RenderOptions::validate() const {
   if (spp < 1 || spp > 65536) fail("spp must be in 1..65536, got " + std::to_string(spp));
   if (max_depth < 0 || max_depth > 31) fail("max_depth must be in 0..31, got " + std::to_string(max_depth));
   if (!(min_weight >= 0 && min_weight <= 1)) fail("min_weight must be in [0, 1], got " + std::to_string(min_weight));
+  if (static_cast<int>(filter) < 0 || static_cast<int>(filter) > static_cast<int>(FilterKind::Mitchell))
+    fail("unknown filter value " + std::to_string(static_cast<int>(filter)));
+  // SamplingOptions checks its adaptive settings only for adaptive sampling;
+  // a bad value is a mistake whatever the mode.
+  if (!(aa_threshold >= 0) || !std::isfinite(aa_threshold))
+    fail("the adaptive threshold must be a finite number >= 0, got " + std::to_string(aa_threshold));
+  if (aa_max_level < 0 || aa_max_level > kMaxAdaptiveLevel)
+    fail("the adaptive maximum level must be in 0.." + std::to_string(kMaxAdaptiveLevel) + ", got " +
+         std::to_string(aa_max_level));
+  sampling().validate();
 }
 
 }  // namespace prism

@@ -3,11 +3,23 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 
 #include "accel/accel_structure.h"
+#include "render/sampler.h"
 #include "scene/scene.h"
 
 namespace prism {
+
+// How the renderer finds what primary rays hit: the first-hit (Z-buffer) pass
+// (render/firsthit.h), traced rays (extend), or the Z-buffer whenever the camera
+// allows it (a pinhole: no depth of field, no motion blur).
+enum class FirstHitMode { Auto, ZBuffer, Trace };
+
+// "auto", "zbuffer", "trace"; an unknown name throws std::invalid_argument listing them.
+FirstHitMode parseFirstHitMode(const std::string& name);
+const char* firstHitName(FirstHitMode mode);
 
 struct RenderOptions {
   int width = 640;
@@ -17,9 +29,20 @@ struct RenderOptions {
   double min_weight = 0.01;
   std::uint64_t seed = 0;
   AccelKind accel = AccelKind::Bvh;  // spatial index for extend / occlude
+  // Anti-aliasing (docs/sampling.md). No mode: none at spp 1, jitter above.
+  std::optional<AaMode> aa;
+  FilterKind filter = FilterKind::Box;  // quincunx always resolves with its tent, adaptive by area
+  double aa_threshold = 0.1;            // adaptive: corner contrast that splits a square
+  int aa_max_level = 2;                 // adaptive: most splits of a pixel's side
+  FirstHitMode first_hit = FirstHitMode::Auto;
 
   static RenderOptions fromScene(const Scene& scene);
-  // Throws std::invalid_argument naming the field when a value is out of range.
+  // The anti-aliasing mode in effect: `aa`, or by default none at one sample per
+  // pixel and jitter above.
+  AaMode aaMode() const { return aa ? *aa : (spp > 1 ? AaMode::Jitter : AaMode::None); }
+  SamplingOptions sampling() const;
+  // Throws std::invalid_argument naming the field when a value is out of range
+  // or the sampling settings do not fit together (SamplingOptions::validate).
   void validate() const;
 };
 

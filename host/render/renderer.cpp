@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
 
 #include "kernels/shared/contribution_gpu.h"
 #include "kernels/shared/hit_gpu.h"
@@ -13,11 +16,22 @@ namespace {
 
 constexpr int kCompactBlock = 256;  // slots counted by one work-item of count_rays
 
-template <typename T>
-void fillZero(Buffer& b, size_t count) {
-  std::vector<T> zeros(count, T{});
-  b.writeVector(zeros);
+// Device bytes a sample takes: its rgba film entry and its (x, y) position.
+constexpr std::uint64_t kFilmBytesPerSample = 4 * sizeof(float);
+constexpr std::uint64_t kPositionBytesPerSample = 2 * sizeof(float);
+// Per pixel: resolved rgba, depth, normal, primid, albedo.
+constexpr std::uint64_t kBytesPerPixel = (4 + 1 + 3 + 1 + 3) * 4;
+
+std::string gib(double bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+  return text;
 }
+
+// Whether the camera's primary rays share one origin (a pinhole), so the first-hit
+// pass can find what they hit. Every camera prism has today is one; depth of field
+// and motion blur will not be.
+bool cameraAllowsZBuffer(const Camera&) { return true; }
 
 }  // namespace
 
@@ -27,18 +41,43 @@ Renderer::Renderer(Context& context) : m_context(context) {
   m_count = context.kernel("count_rays.cl", "count_rays");
   m_scatter = context.kernel("scatter_rays.cl", "scatter_rays");
   m_accumulate = context.kernel("accumulate.cl", "accumulate");
+  m_supersample = context.kernel("supersample.cl", "supersample");
+  m_resolve = context.kernel("resolve.cl", "resolve");
 }
+
+Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, const ProgressFn& progress) {
   options.validate();
   auto start = std::chrono::steady_clock::now();
+  const SamplingOptions sampling = options.sampling();
+  const bool pinhole = cameraAllowsZBuffer(scene.camera);
+  FirstHitMode first_hit = options.first_hit;
+  if (first_hit == FirstHitMode::Auto) first_hit = pinhole ? FirstHitMode::ZBuffer : FirstHitMode::Trace;
+  if (first_hit == FirstHitMode::ZBuffer && !pinhole)
+    throw std::invalid_argument("first hit zbuffer needs a pinhole camera (no depth of field or motion blur); "
+                                "use first hit trace or auto");
+
   GpuScene gpu = flattenScene(scene, options);
   RenderResult result;
   result.width = options.width;
   result.height = options.height;
+  result.stats.aa = sampling.mode;
+  result.stats.filter = sampling.effectiveFilter();
+  result.stats.first_hit = first_hit;
   m_scene = &gpu;
   m_options = &options;
   m_stats = &result.stats;
+  m_zbuffer = first_hit == FirstHitMode::ZBuffer;
+  m_spp = sampling.spp;
+  struct Reset {
+    Renderer* r;
+    ~Reset() {
+      r->m_scene = nullptr;
+      r->m_options = nullptr;
+      r->m_stats = nullptr;
+    }
+  } reset{this};
 
   const size_t pixels = static_cast<size_t>(options.width) * options.height;
   m_camera = Buffer(m_context, sizeof(CameraGpu));
@@ -53,12 +92,14 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
     m_extend = m_context.kernel("extend.cl", "extend", accel->kernel_options);
     m_occlude = m_context.kernel("occlude.cl", "occlude", accel->kernel_options);
   }
+  if (m_zbuffer) {
+    if (!m_firsthit) m_firsthit = std::make_unique<FirstHitPass>(m_context);
+    m_firsthit->prepare(gpu);
+  }
   m_materials = Buffer(m_context, gpu.materials.size() * sizeof(MaterialGpu));
   m_materials.writeVector(gpu.materials);
   m_lights = Buffer(m_context, gpu.lights.size() * sizeof(LightGpu));
   m_lights.writeVector(gpu.lights);
-  m_film = Buffer(m_context, pixels * 4 * sizeof(float));
-  fillZero<float>(m_film, pixels * 4);
   m_aov_depth = Buffer(m_context, pixels * sizeof(float));
   m_aov_normal = Buffer(m_context, pixels * 3 * sizeof(float));
   m_aov_primid = Buffer(m_context, pixels * sizeof(std::int32_t));
@@ -66,7 +107,8 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
 
   const size_t light_count = gpu.lights.size();
   m_levels.clear();
-  for (int d = 0; d <= options.max_depth; ++d) m_levels.emplace_back(m_context, 2 * kSliceRays * sizeof(RayGpu));
+  m_levels.emplace_back();  // depth 0 is generated chunk by chunk straight into m_work
+  for (int d = 1; d <= options.max_depth; ++d) m_levels.emplace_back(m_context, 2 * kSliceRays * sizeof(RayGpu));
   m_work.reserve(m_context, kSliceRays * sizeof(RayGpu));
   m_hits.reserve(m_context, kSliceRays * sizeof(HitGpu));
   m_emit.reserve(m_context, kSliceRays * sizeof(ContributionGpu));
@@ -77,31 +119,154 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   size_t max_blocks = (2 * kSliceRays * std::max<size_t>(light_count, 1) + kCompactBlock - 1) / kCompactBlock;
   m_counts.reserve(m_context, max_blocks * RAY_KIND_COUNT * sizeof(std::int32_t));
   m_offsets.reserve(m_context, max_blocks * sizeof(std::int32_t));
+  m_chunk_xy.reserve(m_context, kSliceRays * 2 * sizeof(float));
+  m_chunk_aov.reserve(m_context, kSliceRays * sizeof(std::int32_t));
 
-  // Whole pixels per chunk, so all samples of a pixel share one primary slice.
-  const size_t chunk_pixels = std::max<size_t>(1, kSliceRays / options.spp);
-  for (size_t first = 0; first < pixels; first += chunk_pixels) {
-    size_t n_pixels = std::min(chunk_pixels, pixels - first);
-    size_t n = n_pixels * options.spp;
-    m_context.launch(m_generate).arg(m_camera).arg(static_cast<int>(first)).arg(static_cast<int>(n)).arg(m_levels[0]).run(n);
-    m_stats->rays_by_kind[RAY_KIND_PRIMARY] += n;
-    traceLevel(0, n);
-    if (progress && !progress(static_cast<double>(first + n_pixels) / pixels)) throw RenderCancelled();
-  }
+  if (sampling.mode == AaMode::Adaptive)
+    renderAdaptive(sampling, result, progress);
+  else
+    renderSamples(sampling, result, progress);
 
-  std::vector<float> film = m_film.readVector<float>(pixels * 4);
-  const float inv_spp = 1.0f / static_cast<float>(options.spp);
-  for (float& v : film) v *= inv_spp;
-  result.rgba = std::move(film);
+  result.stats.rays_per_pixel =
+      static_cast<double>(result.stats.rays_by_kind[RAY_KIND_PRIMARY]) / static_cast<double>(pixels);
   result.depth = m_aov_depth.readVector<float>(pixels);
   result.normal = m_aov_normal.readVector<float>(pixels * 3);
   result.primid = m_aov_primid.readVector<std::int32_t>(pixels);
   result.albedo = m_aov_albedo.readVector<float>(pixels * 3);
+  // The per-sample film can be large: give it back now rather than at the next render.
+  m_film = Buffer();
+  m_sample_xy = Buffer();
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  m_scene = nullptr;
-  m_options = nullptr;
-  m_stats = nullptr;
   return result;
+}
+
+void Renderer::renderSamples(const SamplingOptions& sampling, RenderResult& result, const ProgressFn& progress) {
+  const RenderOptions& opt = *m_options;
+  const size_t pixels = static_cast<size_t>(opt.width) * opt.height;
+  const std::uint64_t total = sampleCount(sampling.mode, opt.width, opt.height, sampling.spp);
+  checkFilmFits(total, true);
+
+  std::vector<float> tile_xy(2, 0.0f);  // a buffer may not be empty
+  if (sampling.mode == AaMode::Poisson) tile_xy = poissonTile(sampling.spp, opt.seed).xy;
+  m_tile = Buffer(m_context, tile_xy.size() * sizeof(float));
+  m_tile.writeVector(tile_xy);
+  m_film = Buffer();  // free the last render's film before asking for this one
+  m_sample_xy = Buffer();
+  m_film = Buffer(m_context, total * kFilmBytesPerSample);
+  zeroFill(m_film, total * kFilmBytesPerSample);
+  m_sample_xy = Buffer(m_context, total * kPositionBytesPerSample);
+
+  // Chunks of kSliceRays samples in sequence order: keys ascend within each.
+  for (std::uint64_t first = 0; first < total; first += kSliceRays) {
+    const size_t n = static_cast<size_t>(std::min<std::uint64_t>(kSliceRays, total - first));
+    m_context.launch(m_supersample)
+        .arg(static_cast<cl_int>(sampling.mode))
+        .arg(static_cast<cl_int>(opt.width))
+        .arg(static_cast<cl_int>(opt.height))
+        .arg(static_cast<cl_int>(sampling.spp))
+        .arg(static_cast<cl_uint>(kernelSeed(opt.seed)))
+        .arg(m_tile)
+        .arg(static_cast<cl_long>(first))
+        .arg(static_cast<cl_int>(n))
+        .arg(m_chunk_xy)
+        .arg(m_chunk_aov)
+        .run(n);
+    PRISM_CL_CHECK(clEnqueueCopyBuffer(m_context.queue(), m_chunk_xy.handle(), m_sample_xy.handle(), 0,
+                                       first * kPositionBytesPerSample, n * kPositionBytesPerSample, 0, nullptr,
+                                       nullptr));
+    traceChunk(static_cast<int>(first), n);
+    if (progress && !progress(static_cast<double>(first + n) / static_cast<double>(total))) throw RenderCancelled();
+  }
+
+  m_pixels.reserve(m_context, pixels * 4 * sizeof(float));
+  m_context.launch(m_resolve)
+      .arg(static_cast<cl_int>(sampling.mode))
+      .arg(static_cast<cl_int>(sampling.effectiveFilter()))
+      .arg(static_cast<cl_int>(opt.width))
+      .arg(static_cast<cl_int>(opt.height))
+      .arg(static_cast<cl_int>(sampling.spp))
+      .arg(m_sample_xy)
+      .arg(m_film)
+      .arg(static_cast<cl_int>(0))
+      .arg(static_cast<cl_int>(pixels))
+      .arg(m_pixels)
+      .run(pixels);
+  result.rgba = m_pixels.readVector<float>(pixels * 4);
+}
+
+void Renderer::renderAdaptive(const SamplingOptions& sampling, RenderResult& result, const ProgressFn& progress) {
+  const RenderOptions& opt = *m_options;
+  const std::int64_t w = opt.width, h = opt.height;
+  // Passes: the corners, then at most one per level. Progress counts passes, each
+  // in proportion to its chunks done.
+  const double passes = 1.0 + sampling.adaptive_max_level;
+  int pass = 0;
+  TraceFn trace = [&](const std::vector<float>& xy) {
+    const size_t n = xy.size() / 2;
+    // The corner (i, j) of pixel (i, j) is its first sample and writes its AOVs
+    // (every corner comes in the first pass; later points are never corners).
+    std::vector<std::int32_t> aov(n, -1);
+    for (size_t k = 0; k < n; ++k) {
+      const float x = xy[2 * k], y = xy[2 * k + 1];
+      if (x == std::floor(x) && y == std::floor(y) && x < w && y < h)
+        aov[k] = static_cast<std::int32_t>(static_cast<std::int64_t>(y) * w + static_cast<std::int64_t>(x));
+    }
+    std::vector<float> rgba = traceFilmPositions(xy, aov, [&](size_t done) {
+      if (progress && !progress(std::min(1.0, (pass + static_cast<double>(done) / n) / passes)))
+        throw RenderCancelled();
+    });
+    ++pass;
+    return rgba;
+  };
+  AdaptiveResult adaptive =
+      adaptiveSample(opt.width, opt.height, sampling.adaptive_threshold, sampling.adaptive_max_level, trace);
+  result.rgba = std::move(adaptive.pixels);
+  if (progress && !progress(1.0)) throw RenderCancelled();
+}
+
+std::vector<float> Renderer::traceFilmPositions(const std::vector<float>& xy,
+                                                const std::vector<std::int32_t>& aov_pixel,
+                                                const std::function<void(size_t done)>& done) {
+  const size_t n = xy.size() / 2;
+  if (aov_pixel.size() != n) throw std::logic_error("traceFilmPositions: one AOV pixel per position");
+  if (n == 0) return {};
+  // The colours come back to the host, so the device film need only hold one batch
+  // (a whole number of slices; the key is the position's index in its batch).
+  constexpr size_t kBatch = 256 * kSliceRays;  // 16M positions, 256 MiB of film
+  const size_t batch = std::min(n, kBatch);
+  checkFilmFits(batch, false);
+  m_film = Buffer();
+  m_film = Buffer(m_context, batch * kFilmBytesPerSample);
+  std::vector<float> rgba(4 * n);
+  for (size_t begin = 0; begin < n; begin += batch) {
+    const size_t count = std::min(batch, n - begin);
+    zeroFill(m_film, count * kFilmBytesPerSample);
+    for (size_t first = 0; first < count; first += kSliceRays) {
+      const size_t m = std::min(kSliceRays, count - first);
+      m_chunk_xy.write(xy.data() + 2 * (begin + first), m * kPositionBytesPerSample);
+      m_chunk_aov.write(aov_pixel.data() + begin + first, m * sizeof(std::int32_t));
+      traceChunk(static_cast<int>(first), m);
+      if (done) done(begin + first + m);
+    }
+    m_film.read(rgba.data() + 4 * begin, count * kFilmBytesPerSample);
+  }
+  return rgba;
+}
+
+void Renderer::traceChunk(int first_key, size_t n) {
+  m_context.launch(m_generate)
+      .arg(m_camera)
+      .arg(m_chunk_xy)
+      .arg(m_chunk_aov)
+      .arg(static_cast<cl_int>(first_key))
+      .arg(static_cast<cl_int>(m_spp))
+      .arg(static_cast<cl_int>(n))
+      .arg(m_work)
+      .run(n);
+  m_stats->rays_by_kind[RAY_KIND_PRIMARY] += n;
+  m_stats->waves = std::max(m_stats->waves, 1);
+  if (m_zbuffer) m_firsthit->run(m_objects, m_chunk_xy, static_cast<int>(n), m_hits);
+  traceSlice(0, n, m_zbuffer);
 }
 
 void Renderer::traceLevel(int depth, size_t count) {
@@ -114,13 +279,13 @@ void Renderer::traceLevel(int depth, size_t count) {
   }
 }
 
-void Renderer::traceSlice(int depth, size_t n) {
+void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
   const int object_count = static_cast<int>(m_scene->objects.size());
   const int light_count = static_cast<int>(m_scene->lights.size());
   const RenderOptions& opt = *m_options;
   m_stats->rays_per_depth[depth] += n;
 
-  {
+  if (!have_hits) {
     KernelLaunch extend = m_context.launch(m_extend);
     extend.arg(m_work).arg(static_cast<int>(n));
     m_accel.bind(extend, m_objects, object_count).arg(m_hits).run(n);
@@ -190,6 +355,50 @@ size_t Renderer::compact(const Buffer& in, size_t count, Buffer& out, std::array
 
 void Renderer::accumulate(const Buffer& contributions, size_t count) {
   m_context.launch(m_accumulate).arg(contributions).arg(static_cast<int>(count)).arg(m_film).run(count);
+}
+
+void Renderer::zeroFill(Buffer& buffer, size_t bytes) {
+  if (bytes == 0) return;
+  const cl_float zero = 0.0f;
+  PRISM_CL_CHECK(
+      clEnqueueFillBuffer(m_context.queue(), buffer.handle(), &zero, sizeof zero, 0, bytes, 0, nullptr, nullptr));
+}
+
+void Renderer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
+  const RenderOptions& opt = *m_options;
+  const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * opt.height;
+  const DeviceDescription& device = m_context.device();
+  cl_ulong max_alloc = 0;
+  PRISM_CL_CHECK(clGetDeviceInfo(device.device, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof max_alloc, &max_alloc, nullptr));
+  const std::uint64_t global = device.global_memory_bytes;
+  // Everything else this render keeps on the device: queues, scene, structure, AOVs.
+  std::uint64_t other = pixels * kBytesPerPixel + m_scene->objects.size() * sizeof(ObjectGpu) +
+                        m_stats->accel_stats.bytes + m_tile.bytes();
+  for (const Buffer* b : {&m_work, &m_hits, &m_emit, &m_children, &m_shadows, &m_shadow_queue, &m_shadow_light,
+                          &m_counts, &m_offsets, &m_chunk_xy, &m_chunk_aov})
+    other += b->bytes();
+  for (const Buffer& b : m_levels) other += b.bytes();
+  if (m_firsthit && m_zbuffer)
+    other += 4 * (m_firsthit->bins().tile_prims.size() + m_firsthit->bins().tile_start.size() +
+                  m_firsthit->bins().global_prims.size());
+
+  const std::uint64_t per_sample = kFilmBytesPerSample + (with_positions ? kPositionBytesPerSample : 0);
+  const std::uint64_t max_key = static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
+  std::uint64_t fit = std::min<std::uint64_t>(max_key, max_alloc / kFilmBytesPerSample);
+  fit = std::min<std::uint64_t>(fit, global > other ? (global - other) / per_sample : 0);
+  if (samples <= fit) return;
+  std::string advice;
+  const std::uint64_t per_pixel = fit / std::max<std::uint64_t>(1, pixels);
+  if (with_positions && m_options->spp > 1 && per_pixel >= 1)
+    advice = "use fewer samples per pixel (at most " + std::to_string(per_pixel) + " at " + std::to_string(opt.width) +
+             "x" + std::to_string(opt.height) + ") or a smaller image";
+  else
+    advice = "use a smaller image, fewer samples per pixel, or a lower adaptive level";
+  throw FilmTooLarge("the film needs " + std::to_string(samples) + " samples at " + std::to_string(per_sample) +
+                     " bytes each (" + gib(static_cast<double>(samples) * per_sample) + ") but device '" +
+                     device.name + "' takes at most " + gib(static_cast<double>(max_alloc)) + " in one buffer, " +
+                     gib(static_cast<double>(global)) + " in all (" + gib(static_cast<double>(other)) +
+                     " already used by this render), and a film index must stay under 2^31; " + advice);
 }
 
 }  // namespace prism

@@ -1,19 +1,24 @@
-// The wavefront Whitted renderer: generate → extend → shade → occlude, wave
-// after wave, with stable compaction of the ray queues in between and
-// deterministic accumulation into the film (see kernels/*.cl).
+// The wavefront Whitted renderer: sample positions → primary rays (or the
+// first-hit Z-buffer) → extend → shade → occlude, wave after wave, with stable
+// compaction of the ray queues in between and deterministic accumulation into a
+// per-sample film, which the resolve kernel filters into pixels (kernels/*.cl,
+// docs/architecture.md, docs/sampling.md).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include "accel/accel_buffers.h"
 #include "accel/accel_structure.h"
 #include "device/context.h"
+#include "render/firsthit.h"
 #include "render/gpu_scene.h"
 #include "render/render_options.h"
+#include "render/sampler.h"
 #include "scene/scene.h"
 
 namespace prism {
@@ -21,11 +26,15 @@ namespace prism {
 struct RenderStats {
   double seconds = 0;
   double kernel_build_seconds = 0;
-  std::array<std::uint64_t, 4> rays_by_kind{};  // indexed by RAY_KIND_*
+  std::array<std::uint64_t, 4> rays_by_kind{};  // indexed by RAY_KIND_*; primary = primary samples
   std::array<std::uint64_t, 32> rays_per_depth{};
   int waves = 0;
   AccelKind accel = AccelKind::Bvh;  // the structure used; accelName() names it
   AccelStats accel_stats;            // its build (host) statistics
+  AaMode aa = AaMode::None;          // the anti-aliasing mode used (the default resolved)
+  FilterKind filter = FilterKind::Box;  // the filter applied (tent for quincunx; unused by adaptive)
+  FirstHitMode first_hit = FirstHitMode::Trace;  // how wave 0 found its hits: ZBuffer or Trace
+  double rays_per_pixel = 0;         // primary samples / pixels
 
   std::uint64_t totalRays() const { return rays_by_kind[0] + rays_by_kind[1] + rays_by_kind[2] + rays_by_kind[3]; }
 };
@@ -45,12 +54,20 @@ class RenderCancelled : public std::runtime_error {
   RenderCancelled() : std::runtime_error("render cancelled by the progress callback") {}
 };
 
+// The per-sample film does not fit the device (the message says how much it needs
+// and what would fit).
+class FilmTooLarge : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Fraction done in [0, 1]; returns false to cancel.
 using ProgressFn = std::function<bool(double)>;
 
 class Renderer {
  public:
   explicit Renderer(Context& context);
+  ~Renderer();
   RenderResult render(const Scene& scene, const RenderOptions& options, const ProgressFn& progress = {});
 
   // Rays per wave slice: a fixed constant (not a device property), so chunking,
@@ -58,23 +75,48 @@ class Renderer {
   static constexpr size_t kSliceRays = 1 << 16;
 
  private:
+  // The sampling modes whose positions come from kernels/supersample.cl, resolved
+  // by kernels/resolve.cl.
+  void renderSamples(const SamplingOptions& sampling, RenderResult& result, const ProgressFn& progress);
+  // Adaptive sampling: adaptiveSample (render/sampler.h) driving traceFilmPositions.
+  void renderAdaptive(const SamplingOptions& sampling, RenderResult& result, const ProgressFn& progress);
+  // "Trace these film positions": the rgba radiance of a primary sample through
+  // each (x, y) of `xy`, exactly as a render computes it, and the AOVs of
+  // aov_pixel[k] (-1: none) from sample k. `done` (per chunk) drives progress.
+  std::vector<float> traceFilmPositions(const std::vector<float>& xy, const std::vector<std::int32_t>& aov_pixel,
+                                        const std::function<void(size_t done)>& done);
+  // Primary samples [first_key, first_key + n), n <= kSliceRays, whose positions
+  // and AOV pixels are in m_chunk_xy / m_chunk_aov: wave 0 from the Z-buffer or
+  // traced rays, then every wave after it, their light added into m_film.
+  void traceChunk(int first_key, size_t n);
   void traceLevel(int depth, size_t count);
-  void traceSlice(int depth, size_t count);
+  // One slice of m_work; `have_hits`: m_hits already holds its closest hits.
+  void traceSlice(int depth, size_t count, bool have_hits = false);
   // Stable compaction of `in` (count slots) into `out`; returns the live count
   // and adds the live rays of each kind to `kinds`.
   size_t compact(const Buffer& in, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds);
   void accumulate(const Buffer& contributions, size_t count);
+  // Throws FilmTooLarge unless `samples` per-sample film entries (and their
+  // positions when `with_positions`) fit the device beside everything else.
+  void checkFilmFits(std::uint64_t samples, bool with_positions) const;
+  void zeroFill(Buffer& buffer, size_t bytes);
 
   Context& m_context;
-  cl_kernel m_generate, m_extend, m_shade, m_occlude, m_count, m_scatter, m_accumulate;
+  cl_kernel m_generate, m_extend, m_shade, m_occlude, m_count, m_scatter, m_accumulate, m_supersample, m_resolve;
+  std::unique_ptr<FirstHitPass> m_firsthit;
 
   // Per-render state.
   const GpuScene* m_scene = nullptr;
   const RenderOptions* m_options = nullptr;
   RenderStats* m_stats = nullptr;
+  bool m_zbuffer = false;  // wave 0 from the first-hit pass
+  int m_spp = 1;           // samples per pixel of the per-pixel modes (1 otherwise)
   AccelBuffers m_accel;
-  Buffer m_camera, m_objects, m_materials, m_lights, m_film, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
-  std::vector<Buffer> m_levels;  // queue of each depth, up to 2 * kSliceRays rays
+  Buffer m_camera, m_objects, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
+  Buffer m_film;       // rgba per primary sample, indexed by the sample's key
+  Buffer m_sample_xy;  // film positions of all samples (for resolve)
+  Buffer m_chunk_xy, m_chunk_aov, m_tile, m_pixels;
+  std::vector<Buffer> m_levels;  // queue of each depth >= 1, up to 2 * kSliceRays rays
   Buffer m_work, m_hits, m_emit, m_children, m_shadows, m_shadow_queue, m_shadow_light, m_counts, m_offsets;
 };
 

@@ -177,6 +177,34 @@ void spreadOut(std::vector<float>& xy, int sweeps, double reach, SplitMix64& rng
     }
 }
 
+// Adaptive sampling's point key -> its colour's slot: a dense table over the
+// dyadic grid when it is small enough (fast), else a hash map (a high level on a
+// large image).
+class PointIndex {
+ public:
+  explicit PointIndex(std::uint64_t grid_points) {
+    if (grid_points <= kDenseLimit) m_dense.assign(static_cast<size_t>(grid_points), kAbsent);
+  }
+  void put(std::uint64_t key, std::uint32_t slot) {
+    if (!m_dense.empty())
+      m_dense[static_cast<size_t>(key)] = slot;
+    else
+      m_sparse.emplace(key, slot);
+  }
+  bool has(std::uint64_t key) const {
+    return !m_dense.empty() ? m_dense[static_cast<size_t>(key)] != kAbsent : m_sparse.count(key) != 0;
+  }
+  std::uint32_t at(std::uint64_t key) const {
+    return !m_dense.empty() ? m_dense[static_cast<size_t>(key)] : m_sparse.at(key);
+  }
+
+ private:
+  static constexpr std::uint64_t kDenseLimit = std::uint64_t{1} << 24;  // 64 MiB of slots
+  static constexpr std::uint32_t kAbsent = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> m_dense;
+  std::unordered_map<std::uint64_t, std::uint32_t> m_sparse;
+};
+
 void checkCount(std::uint64_t count, const char* what) {
   if (count > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::invalid_argument(std::string(what) + ": " + std::to_string(count) + " is more than one launch can hold");
@@ -222,24 +250,24 @@ void SamplingOptions::validate() const {
   switch (mode) {
     case AaMode::None:
       if (spp != 1)
-        fail("--aa none traces one ray through each pixel centre, so spp must be 1 (got " + std::to_string(spp) +
-             "); use --aa grid, jitter, poisson or random for more samples per pixel");
+        fail("aa none traces one ray through each pixel centre, so spp must be 1 (got " + std::to_string(spp) +
+             "); use aa grid, jitter, poisson or random for more samples per pixel");
       break;
     case AaMode::Quincunx:
     case AaMode::Adaptive:
       if (spp != 1)
-        fail("--aa " + mode_name + " places its own samples, so spp must be 1 (got " + std::to_string(spp) + ")");
+        fail("aa " + mode_name + " places its own samples, so spp must be 1 (got " + std::to_string(spp) + ")");
       break;
     case AaMode::Grid: {
       int n = static_cast<int>(std::floor(std::sqrt(static_cast<double>(spp))));
       if (n * n != spp)
-        fail("--aa grid needs a square spp (n x n samples), got " + std::to_string(spp) +
+        fail("aa grid needs a square spp (n x n samples), got " + std::to_string(spp) +
              "; nearest: " + std::to_string(n * n) + " or " + std::to_string((n + 1) * (n + 1)));
       break;
     }
     case AaMode::Poisson:
       if (spp > kMaxPoissonSpp)
-        fail("--aa poisson supports at most " + std::to_string(kMaxPoissonSpp) + " samples per pixel, got " +
+        fail("aa poisson supports at most " + std::to_string(kMaxPoissonSpp) + " samples per pixel, got " +
              std::to_string(spp));
       break;
     case AaMode::Jitter:
@@ -374,7 +402,7 @@ AdaptiveResult adaptiveSample(int width, int height, double threshold, int max_l
   AdaptiveResult result;
   result.width = width;
   result.height = height;
-  std::unordered_map<std::uint64_t, std::uint32_t> index;  // point key -> its colour's slot
+  PointIndex index(static_cast<std::uint64_t>(row) * (static_cast<std::uint64_t>(height) * S + 1));
   std::vector<float> colours;
 
   // Traces the points of `keys` (sorted, unique, not yet traced) in one call.
@@ -397,7 +425,7 @@ AdaptiveResult adaptiveSample(int width, int height, double threshold, int max_l
       throw std::runtime_error("adaptiveSample: the trace callback changed from " + std::to_string(result.channels) +
                                " to " + std::to_string(channels) + " channels");
     const size_t base = colours.size() / channels;
-    for (size_t k = 0; k < keys.size(); ++k) index.emplace(keys[k], static_cast<std::uint32_t>(base + k));
+    for (size_t k = 0; k < keys.size(); ++k) index.put(keys[k], static_cast<std::uint32_t>(base + k));
     colours.insert(colours.end(), c.begin(), c.end());
   };
   auto colour = [&](std::int64_t X, std::int64_t Y) {
@@ -462,7 +490,7 @@ AdaptiveResult adaptiveSample(int width, int height, double threshold, int max_l
       const std::int64_t pts[5][2] = {
           {q.x + h, q.y}, {q.x, q.y + h}, {q.x + h, q.y + h}, {q.x + 2 * h, q.y + h}, {q.x + h, q.y + 2 * h}};
       for (const auto& p : pts)
-        if (!index.count(key(p[0], p[1]))) fresh.push_back(key(p[0], p[1]));
+        if (!index.has(key(p[0], p[1]))) fresh.push_back(key(p[0], p[1]));
       next.push_back({q.pixel, q.x, q.y, h});
       next.push_back({q.pixel, q.x + h, q.y, h});
       next.push_back({q.pixel, q.x, q.y + h, h});

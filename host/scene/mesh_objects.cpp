@@ -54,7 +54,8 @@ Scene sceneForMesh(const SharedMesh& mesh) {
   scene.camera.look_at = centre;
   scene.camera.position = centre + normalize(Vec3{0.35, 0.4, 1.0}) * distance;
   scene.camera.up = {0, 1, 0};
-  scene.film = {800, 600, 1};
+  scene.film.width = 800;
+  scene.film.height = 600;
   scene.render.ambient = {0.15, 0.15, 0.15};
   scene.render.background = {0.12, 0.13, 0.16};
   scene.render.max_depth = 4;

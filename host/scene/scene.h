@@ -24,6 +24,13 @@ struct Film {
   int width = 640;
   int height = 480;
   int spp = 1;
+  // Anti-aliasing (docs/sampling.md): a mode name, or "" for the default (none at
+  // spp 1, jitter above); the reconstruction filter; adaptive sampling's threshold
+  // and maximum subdivision level.
+  std::string aa;
+  std::string filter = "box";
+  double aa_threshold = 0.1;
+  int aa_max_level = 2;
 };
 
 struct RenderSettings {
@@ -33,6 +40,7 @@ struct RenderSettings {
   Vec3 background{0, 0, 0};
   unsigned long long seed = 0;
   std::string accel = "bvh";  // spatial index: bvh, octree, bsp or none
+  std::string first_hit = "auto";  // primary visibility: auto, zbuffer or trace
 };
 
 struct Light {

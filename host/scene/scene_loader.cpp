@@ -14,6 +14,7 @@
 
 #include "mesh/mesh_cache.h"
 #include "mesh/mesh_error.h"
+#include "render/sampler.h"
 #include "scene/mesh_objects.h"
 #include <string>
 #include <utility>
@@ -214,12 +215,47 @@ class SceneParser {
   }
 
   void parseFilm(const Json& v, const std::string& path) {
-    checkObject(v, path, {"width", "height", "spp"});
+    checkObject(v, path, {"width", "height", "spp", "aa", "filter", "aa_threshold", "aa_max_level"});
     Film& f = m_scene.film;
     if (const Json* p = find(v, "width")) f.width = int(integer(*p, member(path, "width"), 1, kMaxFilmSize));
     if (const Json* p = find(v, "height"))
       f.height = int(integer(*p, member(path, "height"), 1, kMaxFilmSize));
     if (const Json* p = find(v, "spp")) f.spp = int(integer(*p, member(path, "spp"), 1, kMaxSpp));
+    // Anti-aliasing (docs/sampling.md): names checked by the sampler's own parsers.
+    SamplingOptions sampling;
+    if (const Json* p = find(v, "aa")) {
+      const std::string name = string(*p, member(path, "aa"), "a string (" + aaModeNames() + ", auto)");
+      if (name != "auto") {
+        try {
+          sampling.mode = parseAaMode(name);
+        } catch (const std::invalid_argument&) {
+          fail(member(path, "aa"), "unknown anti-aliasing mode '" + name + "' (expected " + aaModeNames() + " or auto)");
+        }
+        f.aa = name;
+      }
+    }
+    if (f.aa.empty()) sampling.mode = f.spp > 1 ? AaMode::Jitter : AaMode::None;
+    if (const Json* p = find(v, "filter")) {
+      const std::string name = string(*p, member(path, "filter"), "a string (" + filterNames() + ")");
+      try {
+        sampling.filter = parseFilterKind(name);
+      } catch (const std::invalid_argument&) {
+        fail(member(path, "filter"), "unknown filter '" + name + "' (expected " + filterNames() + ")");
+      }
+      f.filter = name;
+    }
+    if (const Json* p = find(v, "aa_threshold"))
+      f.aa_threshold = number(*p, member(path, "aa_threshold"), "a number >= 0", [](double x) { return x >= 0; });
+    if (const Json* p = find(v, "aa_max_level"))
+      f.aa_max_level = int(integer(*p, member(path, "aa_max_level"), 0, kMaxAdaptiveLevel));
+    sampling.spp = f.spp;
+    sampling.adaptive_threshold = f.aa_threshold;
+    sampling.adaptive_max_level = f.aa_max_level;
+    try {
+      sampling.validate();  // e.g. grid with a spp that is not a square
+    } catch (const std::invalid_argument& e) {
+      fail(member(path, find(v, "spp") ? "spp" : "aa"), e.what());
+    }
   }
 
   unsigned long long seed(const Json& v, const std::string& path) const {
@@ -233,7 +269,7 @@ class SceneParser {
   }
 
   void parseRender(const Json& v, const std::string& path) {
-    checkObject(v, path, {"max_depth", "min_weight", "ambient", "background", "seed", "accel"});
+    checkObject(v, path, {"max_depth", "min_weight", "ambient", "background", "seed", "accel", "first_hit"});
     RenderSettings& r = m_scene.render;
     if (const Json* p = find(v, "max_depth"))
       r.max_depth = int(integer(*p, member(path, "max_depth"), 0, kMaxDepth));
@@ -248,6 +284,12 @@ class SceneParser {
       if (name != "bvh" && name != "octree" && name != "bsp" && name != "none")
         fail(member(path, "accel"), "unknown acceleration structure '" + name + "' (expected bvh, octree, bsp, none)");
       r.accel = name;
+    }
+    if (const Json* p = find(v, "first_hit")) {
+      const std::string name = string(*p, member(path, "first_hit"), "a string (auto, zbuffer, trace)");
+      if (name != "auto" && name != "zbuffer" && name != "trace")
+        fail(member(path, "first_hit"), "unknown first-hit mode '" + name + "' (expected auto, zbuffer, trace)");
+      r.first_hit = name;
     }
   }
 

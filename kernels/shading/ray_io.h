@@ -26,7 +26,7 @@ inline RayGpu ray_make(float3 o, float3 d, float tmin, float tmax, float3 w, int
   r.depth = depth;
   r.kind = kind;
   r.sample = sample;
-  r.pad = 0;
+  r.aov_pixel = -1;
   return r;
 }
 

@@ -16,11 +16,16 @@ typedef struct RayGpu {
   /* Weight of the ray's contribution to its pixel (parent weight times the
    * coefficients on the way); for a shadow feeler, the light it would bring. */
   float wr, wg, wb;
+  /* The film key its light is added to: in a render, the index of the primary
+   * sample the ray descends from in the image's sample sequence (docs/sampling.md),
+   * so queues sorted by key accumulate without atomics; elsewhere any index. */
   int pixel;
   int depth;  /* 0 for primary rays */
   int kind;   /* RAY_KIND_* */
-  int sample; /* sample index within the pixel; AOVs come from sample 0 */
-  int pad;    /* keeps the struct at 64 bytes, a multiple of float4 */
+  int sample; /* index of the sample within its pixel (per-pixel modes), else 0 */
+  /* Primary rays: the pixel whose AOVs this sample writes, or -1 for none (see
+   * kernels/supersample.cl); -1 for every other ray. Keeps the struct at 64 bytes. */
+  int aov_pixel;
 } RayGpu;
 
 #endif

@@ -30,7 +30,9 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "prism render --help exited ${rc}:\n${out}${err}")
 endif()
 foreach(word --output --width --height --spp --max-depth --min-weight --device --aov --seed --no-cache --quiet
-             .png .exr .hdr .pfm .tif depth normal primid albedo)
+             .png .exr .hdr .pfm .tif depth normal primid albedo
+             --aa --filter --aa-threshold --aa-max-level --first-hit
+             grid quincunx adaptive jitter poisson random box tent gaussian mitchell zbuffer trace docs/sampling.md)
   expect_contains("${out}" "${word}" "prism render --help")
 endforeach()
 

@@ -47,6 +47,21 @@ if(NOT out MATCHES "prism: rendered 64x36 at [0-9]+ spp on '.+' with (bvh|octree
 endif()
 expect_magic("${WORK_DIR}/depth.exr" "762f3101")
 
+# Quincunx: (64+1)(36+1) + 64*36 = 4709 primary rays, 2.044 per pixel, through the
+# first-hit pass (auto) or traced (--first-hit trace); the summary says so.
+run_prism(render "${scene}" -o "${WORK_DIR}/quincunx.png" ${size} --aa quincunx)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "quincunx render exited ${rc}:\n${out}${err}")
+endif()
+if(NOT out MATCHES "aa quincunx \\(tent\\), 2\\.044 rays/pixel, first hit by zbuffer; 4709 primary, ")
+  message(FATAL_ERROR "unexpected quincunx summary line:\n${out}")
+endif()
+expect_magic("${WORK_DIR}/quincunx.png" "89504e470d0a1a0a")
+run_prism(render "${scene}" -o "${WORK_DIR}/jitter.png" ${size} --spp 4 --filter mitchell --first-hit trace)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "aa jitter, mitchell filter, 4\\.000 rays/pixel, first hit by trace; 9216 primary, ")
+  message(FATAL_ERROR "jitter render exited ${rc} with an unexpected summary line:\n${out}${err}")
+endif()
+
 run_prism(render "${scene}" -o "${WORK_DIR}/depth.png" ${size} --aov depth --quiet)
 if(rc EQUAL 0)
   message(FATAL_ERROR "the depth AOV to PNG must be refused, but prism exited 0")

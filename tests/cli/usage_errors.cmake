@@ -37,6 +37,13 @@ expect_usage_error("--quiet takes no value" render "${scene}" -o "${out}" --quie
 expect_usage_error("--aov" render "${scene}" -o "${out}" --aov colour)
 expect_usage_error("'.xyz'" render "${scene}" -o "${WORK_DIR}/out.xyz")
 expect_usage_error("--frob" devices --frob)
+expect_usage_error("--aa: unknown mode 'supersample'" render "${scene}" -o "${out}" --aa supersample)
+expect_usage_error("--filter: unknown filter 'lanczos'" render "${scene}" -o "${out}" --filter lanczos)
+expect_usage_error("4 or 9" render "${scene}" -o "${out}" --aa grid --spp 5)
+expect_usage_error("--spp must be 1" render "${scene}" -o "${out}" --aa quincunx --spp 4)
+expect_usage_error("--aa-max-level" render "${scene}" -o "${out}" --aa-max-level 9)
+expect_usage_error("--aa-threshold" render "${scene}" -o "${out}" --aa-threshold -0.5)
+expect_usage_error("--first-hit: unknown mode 'raster'" render "${scene}" -o "${out}" --first-hit raster)
 
 file(GLOB left "${WORK_DIR}/*")
 if(left)

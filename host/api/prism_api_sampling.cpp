@@ -1,0 +1,70 @@
+// The C API's names of the anti-aliasing modes, reconstruction filters and
+// first-hit modes (include/prism.h).
+#include <cstring>
+#include <string>
+
+#include "api/api_boundary.h"
+#include "prism.h"
+
+using namespace prism;
+
+namespace {
+
+template <typename E>
+struct Named {
+  const char* name;
+  E value;
+};
+
+const Named<PrismAa> kAaNames[] = {{"auto", PRISM_AA_AUTO},         {"none", PRISM_AA_NONE},
+                                   {"grid", PRISM_AA_GRID},         {"quincunx", PRISM_AA_QUINCUNX},
+                                   {"adaptive", PRISM_AA_ADAPTIVE}, {"jitter", PRISM_AA_JITTER},
+                                   {"poisson", PRISM_AA_POISSON},   {"random", PRISM_AA_RANDOM}};
+const Named<PrismFilter> kFilterNames[] = {{"box", PRISM_FILTER_BOX},
+                                           {"tent", PRISM_FILTER_TENT},
+                                           {"gaussian", PRISM_FILTER_GAUSSIAN},
+                                           {"mitchell", PRISM_FILTER_MITCHELL}};
+const Named<PrismFirstHit> kFirstHitNames[] = {
+    {"auto", PRISM_FIRST_HIT_AUTO}, {"zbuffer", PRISM_FIRST_HIT_ZBUFFER}, {"trace", PRISM_FIRST_HIT_TRACE}};
+
+template <typename E, size_t N>
+PrismStatus parse(const Named<E> (&table)[N], const char* function, const char* what, const char* name, E* out) {
+  if (!name || !out) return fail(PRISM_ERROR_INVALID_ARGUMENT, std::string(function) + ": NULL argument");
+  std::string valid;
+  for (const Named<E>& entry : table) {
+    if (std::strcmp(name, entry.name) == 0) {
+      *out = entry.value;
+      return PRISM_OK;
+    }
+    valid += (valid.empty() ? "" : ", ") + std::string(entry.name);
+  }
+  return fail(PRISM_ERROR_INVALID_ARGUMENT, std::string("unknown ") + what + " '" + name + "' (expected " + valid + ")");
+}
+
+template <typename E, size_t N>
+const char* nameOf(const Named<E> (&table)[N], E value) {
+  for (const Named<E>& entry : table)
+    if (entry.value == value) return entry.name;
+  return nullptr;
+}
+
+}  // namespace
+
+extern "C" {
+
+PRISM_API PrismStatus prismParseAa(const char* name, PrismAa* aa) {
+  return parse(kAaNames, "prismParseAa", "anti-aliasing mode", name, aa);
+}
+PRISM_API const char* prismAaName(PrismAa aa) { return nameOf(kAaNames, aa); }
+
+PRISM_API PrismStatus prismParseFilter(const char* name, PrismFilter* filter) {
+  return parse(kFilterNames, "prismParseFilter", "filter", name, filter);
+}
+PRISM_API const char* prismFilterName(PrismFilter filter) { return nameOf(kFilterNames, filter); }
+
+PRISM_API PrismStatus prismParseFirstHit(const char* name, PrismFirstHit* first_hit) {
+  return parse(kFirstHitNames, "prismParseFirstHit", "first-hit mode", name, first_hit);
+}
+PRISM_API const char* prismFirstHitName(PrismFirstHit first_hit) { return nameOf(kFirstHitNames, first_hit); }
+
+}  // extern "C"
