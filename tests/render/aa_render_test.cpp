@@ -17,6 +17,7 @@
 #include "prism.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "support/square_coverage.h"
 #include "support/shared_context.h"
 
 using namespace prism;
@@ -71,23 +72,7 @@ std::string edgeScene(int size, double qx, double qy, double angle) {
 
 // Area of the pixel [i, i+1] x [j, j+1] on the side n.(p - q) >= 0, by clipping.
 double pixelCoverage(int i, int j, double qx, double qy, double nx, double ny) {
-  std::vector<std::pair<double, double>> poly = {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}, out;
-  auto side = [&](const std::pair<double, double>& p) { return nx * (p.first - qx) + ny * (p.second - qy); };
-  for (size_t k = 0; k < poly.size(); ++k) {
-    auto a = poly[k], b = poly[(k + 1) % poly.size()];
-    double sa = side(a), sb = side(b);
-    if (sa >= 0) out.push_back(a);
-    if ((sa >= 0) != (sb >= 0)) {
-      double t = sa / (sa - sb);
-      out.push_back({a.first + t * (b.first - a.first), a.second + t * (b.second - a.second)});
-    }
-  }
-  double area = 0;
-  for (size_t k = 0; k < out.size(); ++k) {
-    auto a = out[k], b = out[(k + 1) % out.size()];
-    area += a.first * b.second - b.first * a.second;
-  }
-  return std::fabs(area) / 2;
+  return prism::test::squareCoverage(i, j, qx, qy, nx, ny);
 }
 
 bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/sampler.h"
+#include "support/square_coverage.h"
 #include "support/shared_context.h"
 
 using namespace prism;
@@ -38,23 +39,7 @@ struct TestRng {
 // Area of the unit square [0,1]^2 on the side n.(p - q) >= 0 of a line, by
 // clipping the square (Sutherland-Hodgman) and the shoelace formula.
 double halfPlaneArea(double qx, double qy, double nx, double ny) {
-  std::vector<std::pair<double, double>> poly = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, out;
-  auto side = [&](const std::pair<double, double>& p) { return nx * (p.first - qx) + ny * (p.second - qy); };
-  for (size_t k = 0; k < poly.size(); ++k) {
-    auto a = poly[k], b = poly[(k + 1) % poly.size()];
-    double sa = side(a), sb = side(b);
-    if (sa >= 0) out.push_back(a);
-    if ((sa >= 0) != (sb >= 0)) {
-      double t = sa / (sa - sb);
-      out.push_back({a.first + t * (b.first - a.first), a.second + t * (b.second - a.second)});
-    }
-  }
-  double area = 0;
-  for (size_t k = 0; k < out.size(); ++k) {
-    auto a = out[k], b = out[(k + 1) % out.size()];
-    area += a.first * b.second - b.first * a.second;
-  }
-  return std::fabs(area) / 2;
+  return prism::test::squareCoverage(0, 0, qx, qy, nx, ny);
 }
 
 struct Edge {
