@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -77,12 +78,25 @@ double median(std::vector<double> v) {
   return v.empty() ? kNaN : v[v.size() / 2];
 }
 
-template <typename F>
-double medianSeconds(int repeats, F run) {
-  std::vector<double> t;
-  for (int i = 0; i < std::max(1, repeats); ++i) t.push_back(run());
-  return median(t);
+// Times every run in turn, one call each per round for `repeats` rounds, and
+// returns each one's median. Interleaved, a change of load on the shared
+// machine touches every contender alike, so the ratios taken in one run stay
+// steadier than when each contender's repeats run back to back.
+std::vector<double> interleavedMedians(int repeats, const std::vector<std::function<double()>>& runs) {
+  std::vector<std::vector<double>> times(runs.size());
+  for (int r = 0; r < std::max(1, repeats); ++r)
+    for (std::size_t i = 0; i < runs.size(); ++i) times[i].push_back(runs[i]());
+  std::vector<double> out;
+  for (auto& t : times) out.push_back(median(t));
+  return out;
 }
+
+// Embree or one of prism's structures, answering the same rays.
+struct Contender {
+  BenchRow row;
+  std::function<std::vector<HitGpu>(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*)> intersect;
+  std::function<void(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*)> occluded;
+};
 
 double mrays(std::size_t rays, double seconds) { return seconds > 0 ? rays / seconds / 1e6 : kNaN; }
 
@@ -174,7 +188,8 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
   if (options.embree) std::cout << "reference: none (prism-bench was built without Embree)\n";
 #endif
   std::cout << "rays: " << options.camera << "x" << options.camera << " primary, shadow rays from their hits, "
-            << options.random_rays << " random; median of " << options.repeats << " runs\n\n";
+            << options.random_rays << " random; median of " << options.repeats
+            << " runs, the contenders taking turns\n\n";
   printTableHeader(std::cout);
 
   std::vector<std::string> inputs = options.files;
@@ -191,83 +206,102 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     const std::vector<RayGpu> primary_gpu = toRayGpu(primary), random_gpu = toRayGpu(random);
     const float light[3] = {box.hi[0] + (box.hi[0] - box.lo[0]), box.hi[1] + 2 * (box.hi[1] - box.lo[1]),
                             box.hi[2] + (box.hi[2] - box.lo[2])};
-    std::vector<QueryRay> shadows;
-    std::vector<RayGpu> shadows_gpu;
-    std::vector<HitGpu> reference_hits;
-    BenchRow embree_row;
+
+    // Everything is built first, so that the rays can be timed in turns.
+    std::vector<Contender> contenders;
     bool have_embree = false;
 #ifdef PRISM_BENCH_EMBREE
+    std::unique_ptr<EmbreeReference> ref;
     if (options.embree && !scene.indices.empty()) {
-      EmbreeReference ref(scene.positions, scene.indices, threads);
-      embree_row.scene = scene.name;
-      embree_row.triangles = scene.objects.size();
-      embree_row.structure = "embree";
-      embree_row.build_seconds = ref.buildSeconds();
-      embree_row.primary_mrays = mrays(primary.size(), medianSeconds(options.repeats, [&] {
-                                         double s;
-                                         reference_hits = ref.intersect(primary, &s);
-                                         return s;
-                                       }));
-      shadows = shadowRays(primary, reference_hits, light);
-      embree_row.shadow_mrays = mrays(shadows.size(), medianSeconds(options.repeats, [&] {
-                                        double s;
-                                        ref.occluded(shadows, &s);
-                                        return s;
-                                      }));
-      embree_row.random_mrays = mrays(random.size(), medianSeconds(options.repeats, [&] {
-                                        double s;
-                                        ref.intersect(random, &s);
-                                        return s;
-                                      }));
-      embree_row.primary_ratio = embree_row.shadow_ratio = embree_row.random_ratio = embree_row.build_ratio = 1;
+      ref = std::make_unique<EmbreeReference>(scene.positions, scene.indices, threads);
+      Contender c;
+      c.row.structure = "embree";
+      c.row.build_seconds = ref->buildSeconds();
+      c.intersect = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s) {
+        return ref->intersect(q, s);
+      };
+      c.occluded = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s) {
+        ref->occluded(q, s);
+      };
+      contenders.push_back(std::move(c));
       have_embree = true;
-      printTableRow(std::cout, embree_row);
     }
 #endif
+    std::vector<std::unique_ptr<RayQueryEngine>> engines;
     for (AccelKind kind : options.structures) {
-      RayQueryEngine engine(context, scene.objects, kind);
-      const AccelStats& st = engine.accel().stats;
-      BenchRow row;
+      engines.push_back(std::make_unique<RayQueryEngine>(context, scene.objects, kind));
+      RayQueryEngine* engine = engines.back().get();
+      const AccelStats& st = engine->accel().stats;
+      Contender c;
+      c.row.structure = accelName(kind);
+      c.row.build_seconds = st.build_seconds;
+      c.row.bytes_per_triangle = scene.objects.empty() ? kNaN : double(st.bytes) / scene.objects.size();
+      c.row.nodes = static_cast<double>(st.node_count);
+      c.row.leaves = static_cast<double>(st.leaf_count);
+      c.row.prims_per_leaf = st.mean_prims_per_leaf;
+      c.row.sah = st.sah_cost;
+      c.row.duplication = st.duplication;
+      c.intersect = [engine](const std::vector<QueryRay>&, const std::vector<RayGpu>& g, double* s) {
+        return engine->intersect(g, s);
+      };
+      c.occluded = [engine](const std::vector<QueryRay>&, const std::vector<RayGpu>& g, double* s) {
+        engine->occluded(g, s);
+      };
+      contenders.push_back(std::move(c));
+    }
+    if (contenders.empty()) return;
+
+    // One untimed round gives the hits (the reference is Embree's when it
+    // runs, else the first structure's) and warms every contender up.
+    std::vector<HitGpu> reference_hits;
+    for (Contender& c : contenders) {
+      double s;
+      std::vector<HitGpu> hits = c.intersect(primary, primary_gpu, &s);
+      if (reference_hits.empty()) reference_hits = hits;
+      if (c.row.structure != "embree") c.row.agreement = agreementPercent(reference_hits, hits);
+    }
+    const std::vector<QueryRay> shadows = shadowRays(primary, reference_hits, light);
+    const std::vector<RayGpu> shadows_gpu = toRayGpu(shadows);
+
+    auto timeAll = [&](const std::vector<QueryRay>& rays, const std::vector<RayGpu>& rays_gpu, bool occlusion) {
+      std::vector<std::function<double()>> runs;
+      for (Contender& c : contenders)
+        runs.push_back([&c, &rays, &rays_gpu, occlusion] {
+          double s;
+          if (occlusion)
+            c.occluded(rays, rays_gpu, &s);
+          else
+            c.intersect(rays, rays_gpu, &s);
+          return s;
+        });
+      std::vector<double> seconds = interleavedMedians(options.repeats, runs);
+      std::vector<double> out;
+      for (double t : seconds) out.push_back(mrays(rays.size(), t));
+      return out;
+    };
+    const std::vector<double> primary_mrays = timeAll(primary, primary_gpu, false);
+    const std::vector<double> shadow_mrays = timeAll(shadows, shadows_gpu, true);
+    const std::vector<double> random_mrays = timeAll(random, random_gpu, false);
+
+    for (std::size_t i = 0; i < contenders.size(); ++i) {
+      BenchRow& row = contenders[i].row;
       row.scene = scene.name;
       row.triangles = scene.objects.size();
-      row.structure = accelName(kind);
-      row.build_seconds = st.build_seconds;
-      row.bytes_per_triangle = scene.objects.empty() ? kNaN : double(st.bytes) / scene.objects.size();
-      row.nodes = static_cast<double>(st.node_count);
-      row.leaves = static_cast<double>(st.leaf_count);
-      row.prims_per_leaf = st.mean_prims_per_leaf;
-      row.sah = st.sah_cost;
-      row.duplication = st.duplication;
-      std::vector<HitGpu> hits;
-      row.primary_mrays = mrays(primary.size(), medianSeconds(options.repeats, [&] {
-                                  double s;
-                                  hits = engine.intersect(primary_gpu, &s);
-                                  return s;
-                                }));
-      if (reference_hits.empty()) reference_hits = hits;  // no Embree: agreement with the first structure
-      row.agreement = agreementPercent(reference_hits, hits);
-      if (shadows.empty()) shadows = shadowRays(primary, reference_hits, light);
-      if (shadows_gpu.empty()) shadows_gpu = toRayGpu(shadows);
-      row.shadow_mrays = mrays(shadows.size(), medianSeconds(options.repeats, [&] {
-                                 double s;
-                                 engine.occluded(shadows_gpu, &s);
-                                 return s;
-                               }));
-      row.random_mrays = mrays(random.size(), medianSeconds(options.repeats, [&] {
-                                 double s;
-                                 engine.intersect(random_gpu, &s);
-                                 return s;
-                               }));
+      row.primary_mrays = primary_mrays[i];
+      row.shadow_mrays = shadow_mrays[i];
+      row.random_mrays = random_mrays[i];
       if (have_embree) {
-        row.primary_ratio = row.primary_mrays / embree_row.primary_mrays;
-        row.shadow_ratio = row.shadow_mrays / embree_row.shadow_mrays;
-        row.random_ratio = row.random_mrays / embree_row.random_mrays;
-        row.build_ratio = row.build_seconds / embree_row.build_seconds;
+        const BenchRow& e = contenders[0].row;
+        row.primary_ratio = row.primary_mrays / e.primary_mrays;
+        row.shadow_ratio = row.shadow_mrays / e.shadow_mrays;
+        row.random_ratio = row.random_mrays / e.random_mrays;
+        row.build_ratio = row.build_seconds / e.build_seconds;
       }
       printTableRow(std::cout, row);
-      rows.push_back(row);
     }
-    if (have_embree) rows.push_back(embree_row);
+    // Embree's row last in the files, as before.
+    for (std::size_t i = have_embree ? 1 : 0; i < contenders.size(); ++i) rows.push_back(contenders[i].row);
+    if (have_embree) rows.push_back(contenders[0].row);
   };
 
   for (const std::string& path : inputs) runScene(loadInput(path));

@@ -15,9 +15,10 @@ static_assert(sizeof(TriPacketGpu) == 160 && offsetof(TriPacketGpu, e1x) == 48 &
 static_assert(sizeof(BvhNodeGpu) == 224 && offsetof(BvhNodeGpu, hi_x) == 32 && offsetof(BvhNodeGpu, lo_y) == 64 &&
                   offsetof(BvhNodeGpu, lo_z) == 128 && offsetof(BvhNodeGpu, child) == 192,
               "BvhNodeGpu: seven float8");
-static_assert(sizeof(OctreeNodeGpu) == 32 && offsetof(OctreeNodeGpu, first_child) == 12 &&
-                  offsetof(OctreeNodeGpu, child_mask) == 16 && offsetof(OctreeNodeGpu, packet_count) == 24,
-              "OctreeNodeGpu layout: two float4");
+static_assert(sizeof(OctreeNodeGpu) == 48 && offsetof(OctreeNodeGpu, first) == 12 &&
+                  offsetof(OctreeNodeGpu, child_mask) == 28 && offsetof(OctreeNodeGpu, cx) == 32 &&
+                  offsetof(OctreeNodeGpu, packet_count) == 44,
+              "OctreeNodeGpu layout: three float4");
 static_assert(sizeof(BspNodeGpu) == 8 && offsetof(BspNodeGpu, payload) == 4, "BspNodeGpu layout");
 static_assert(sizeof(prism::AccelWord) == 16 && alignof(prism::AccelWord) == 16, "AccelWord is one float4");
 static_assert(sizeof(BvhNodeGpu) % sizeof(prism::AccelWord) == 0 && sizeof(OctreeNodeGpu) % sizeof(prism::AccelWord) == 0,

@@ -29,6 +29,7 @@ constexpr std::size_t kParallelPrims = 2048;
 struct Cell {
   CellBox box;
   float center[3] = {0, 0, 0};
+  Aabb content;                     // the contents' bounds clipped to `box`
   std::vector<std::int32_t> items;  // positions in PrimitiveSet::bounded (leaves only)
   std::unique_ptr<Cell> kids[8];
   bool leaf = true;
@@ -61,7 +62,7 @@ class OctreeBuilder {
     }
     if (n <= static_cast<std::size_t>(m_options.octree_leaf_prims) || depth >= m_options.octree_max_depth ||
         !can_halve) {
-      cell.items = std::move(items);
+      makeLeaf(cell, std::move(items));
       return;
     }
 
@@ -95,7 +96,7 @@ class OctreeBuilder {
     if (occupied == 1) progress = true;
     if (total > m_options.octree_max_growth * n) progress = false;
     if (!progress) {
-      cell.items = std::move(items);
+      makeLeaf(cell, std::move(items));
       return;
     }
     items.clear();
@@ -114,6 +115,21 @@ class OctreeBuilder {
                 big);
     }
     group.wait();
+    for (const auto& kid : cell.kids)
+      if (kid) cell.content.extend(kid->content);
+  }
+
+  void makeLeaf(Cell& cell, std::vector<std::int32_t> items) {
+    cell.items = std::move(items);
+    for (std::int32_t item : cell.items) {
+      // Exact: the cell's corners are floats.
+      Aabb b = m_prims.bounds[item];
+      for (int a = 0; a < 3; ++a) {
+        b.lo[a] = std::max(b.lo[a], static_cast<float>(cell.box.lo[a]));
+        b.hi[a] = std::min(b.hi[a], static_cast<float>(cell.box.hi[a]));
+      }
+      cell.content.extend(b);
+    }
   }
 
   static CellBox octant(const CellBox& box, const float c[3], int k) {
@@ -165,8 +181,8 @@ class OctreeFlattener {
       }
       PacketRange r = appendLeafPackets(m_objects, m_ids.data(), m_ids.size(), m_out.packets);
       OctreeNodeGpu& n = m_nodes[index];
-      n = OctreeNodeGpu{};
-      n.packet_start = static_cast<int>(r.start);
+      n = nodeWithBox(cell);
+      n.first = static_cast<int>(r.start);
       n.packet_count = static_cast<int>(r.count);
       m_sah += rel * cell.items.size();
       if (cell.items.empty())
@@ -182,15 +198,26 @@ class OctreeFlattener {
     const std::size_t first = m_nodes.size();
     m_nodes.resize(first + __builtin_popcount(mask));
     OctreeNodeGpu& n = m_nodes[index];
-    n = OctreeNodeGpu{};
+    n = nodeWithBox(cell);
     n.cx = cell.center[0];
     n.cy = cell.center[1];
     n.cz = cell.center[2];
-    n.first_child = static_cast<int>(first);
+    n.first = static_cast<int>(first);
     n.child_mask = mask;
     std::size_t slot = first;
     for (int k = 0; k < 8; ++k)
       if (cell.kids[k]) flatten(*cell.kids[k], slot++, depth + 1);
+  }
+
+  static OctreeNodeGpu nodeWithBox(const Cell& cell) {
+    OctreeNodeGpu n{};
+    n.lo_x = cell.content.lo[0];
+    n.lo_y = cell.content.lo[1];
+    n.lo_z = cell.content.lo[2];
+    n.hi_x = cell.content.hi[0];
+    n.hi_y = cell.content.hi[1];
+    n.hi_z = cell.content.hi[2];
+    return n;
   }
 
   const std::vector<ObjectGpu>& m_objects;

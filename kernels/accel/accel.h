@@ -30,6 +30,9 @@
 #define PRISM_ACCEL_STACK 64
 #endif
 
+/* Outside the #if for the same reason. */
+#include "accel/cell_leaf.h"
+
 #if defined(PRISM_ACCEL_BVH)
 #include "accel/bvh.h"
 #elif defined(PRISM_ACCEL_OCTREE)

@@ -15,7 +15,7 @@ typedef struct BvhRay {
   int nx, ny, nz; /* float8 index of the near slab per axis; far is index ^ 1 */
 } BvhRay;
 
-inline BvhRay bvh_ray(float3 o, float3 d) {
+PRISM_HOT BvhRay bvh_ray(float3 o, float3 d) {
   float3 inv = accel_safe_rcp(d);
   BvhRay r;
   r.ox = (float8)(o.x);
@@ -34,7 +34,7 @@ inline BvhRay bvh_ray(float3 o, float3 d) {
  * distances in *tn. The limit is scaled with the far distances: a primitive
  * whose t ties the best hit to the last bits (a vertex shared by several
  * triangles at a box corner) must still be reached. */
-inline int bvh_node_mask(__global const float8* n, const BvhRay* r, float tmin, float tlimit, float8* tn) {
+PRISM_HOT int bvh_node_mask(__global const float8* n, const BvhRay* r, float tmin, float tlimit, float8* tn) {
   float8 nx = (n[r->nx] - r->ox) * r->ix;
   float8 ny = (n[r->ny] - r->oy) * r->iy;
   float8 nz = (n[r->nz] - r->oz) * r->iz;
@@ -51,13 +51,13 @@ inline int bvh_node_mask(__global const float8* n, const BvhRay* r, float tmin, 
   return b2.x | b2.y;
 }
 
-inline void bvh_leaf_range(int code, int* start, int* count) {
+PRISM_HOT void bvh_leaf_range(int code, int* start, int* count) {
   int x = ~code;
   *start = x >> BVH_LEAF_COUNT_BITS;
   *count = (x & (BVH_LEAF_MAX_PACKETS - 1)) + 1;
 }
 
-inline bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
+PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
   unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, tmin, &best, hit);
@@ -115,7 +115,7 @@ inline bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tm
   return hit->prim >= 0;
 }
 
-inline float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
                                  float tmax) {
   float carried =
       unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);

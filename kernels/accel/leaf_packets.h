@@ -27,24 +27,24 @@
  * the exit t1 of the cell searched, and cells entered after `best` need no
  * search; both with the same slack, since a primitive in a later cell may hit
  * a few ulps before that cell's computed entry. */
-inline bool accel_before(float best, float t) { return best < t - ACCEL_CELL_EPS * fabs(t); }
+PRISM_HOT bool accel_before(float best, float t) { return best < t - ACCEL_CELL_EPS * fabs(t); }
 
 /* 1/d without infinities: a zero component becomes a tiny one of the same
  * sign, so (plane - o) * inv is never 0 * inf = NaN. */
-inline float3 accel_safe_rcp(float3 d) {
+PRISM_HOT float3 accel_safe_rcp(float3 d) {
   const float tiny = 1e-30f;
   float3 s = (float3)(fabs(d.x) < tiny ? copysign(tiny, d.x) : d.x, fabs(d.y) < tiny ? copysign(tiny, d.y) : d.y,
                       fabs(d.z) < tiny ? copysign(tiny, d.z) : d.z);
   return 1.0f / s;
 }
 
-inline int accel_ctz(int x) { return 31 - clz(x & -x); }
+PRISM_HOT int accel_ctz(int x) { return 31 - clz(x & -x); }
 
 typedef struct PacketRay {
   float4 ox, oy, oz, dx, dy, dz;
 } PacketRay;
 
-inline PacketRay packet_ray(float3 o, float3 d) {
+PRISM_HOT PacketRay packet_ray(float3 o, float3 d) {
   PacketRay r;
   r.ox = (float4)(o.x);
   r.oy = (float4)(o.y);
@@ -55,14 +55,14 @@ inline PacketRay packet_ray(float3 o, float3 d) {
   return r;
 }
 
-inline void accel_miss(HitGpu* hit) {
+PRISM_HOT void accel_miss(HitGpu* hit) {
   hit->t = PRISM_INF;
   hit->prim = -1;
   hit->u = 0.0f;
   hit->v = 0.0f;
 }
 
-inline void accel_accept(float t, float u, float v, int prim, float* best, HitGpu* hit) {
+PRISM_HOT void accel_accept(float t, float u, float v, int prim, float* best, HitGpu* hit) {
   if (t < *best || (t == *best && hit->prim >= 0 && prim < hit->prim)) {
     *best = t;
     hit->t = t;
@@ -74,7 +74,7 @@ inline void accel_accept(float t, float u, float v, int prim, float* best, HitGp
 
 /* Moller-Trumbore on four triangles: t, u, v and a lane mask of hits in
  * (tmin, tlimit] (or (tmin, tlimit) when `closed` is 0). */
-inline int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay* r, float tmin, float tlimit, int closed,
+PRISM_HOT int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay* r, float tmin, float tlimit, int closed,
                              float4* t_out, float4* u_out, float4* v_out) {
   __global const float4* q = (__global const float4*)pk;
   float4 e1x = q[3], e1y = q[4], e1z = q[5];
@@ -99,7 +99,7 @@ inline int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay* r
   return ~reject & in_range;
 }
 
-inline void packet_closest(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
+PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
                            float* best, HitGpu* hit, __global const ObjectGpu* objects) {
   float4 t, u, v;
   int4 ok = packet_intersect(pk, r, tmin, *best, 1, &t, &u, &v);
@@ -128,7 +128,7 @@ inline void packet_closest(__global const TriPacketGpu* pk, const PacketRay* r, 
 }
 
 /* k_trans of a primitive; NULL materials (plain occlusion queries): opaque. */
-inline float accel_transmit(__global const MaterialGpu* materials, __global const ObjectGpu* objects, int prim) {
+PRISM_HOT float accel_transmit(__global const MaterialGpu* materials, __global const ObjectGpu* objects, int prim) {
   return materials ? materials[objects[prim].material].transmit : 0.0f;
 }
 
@@ -142,13 +142,13 @@ typedef struct Mailbox {
   int next;
 } Mailbox;
 
-inline void mailbox_init(Mailbox* m) {
+PRISM_HOT void mailbox_init(Mailbox* m) {
   for (int i = 0; i < MAILBOX_SIZE; ++i) m->ids[i] = -1;
   m->next = 0;
 }
 
 /* True the first time `prim` is offered. */
-inline bool mailbox_first(Mailbox* m, int prim) {
+PRISM_HOT bool mailbox_first(Mailbox* m, int prim) {
   for (int i = 0; i < MAILBOX_SIZE; ++i)
     if (m->ids[i] == prim) return false;
   m->ids[m->next] = prim;
@@ -158,7 +158,7 @@ inline bool mailbox_first(Mailbox* m, int prim) {
 
 /* `carried` after a hit at t on prim; cell interval and mailbox only for the
  * spatial subdivisions (mailbox NULL: every hit counts, as in the BVH). */
-inline float accel_count_hit(float carried, int prim, float t, float cell_lo, float cell_hi, Mailbox* mailbox,
+PRISM_HOT float accel_count_hit(float carried, int prim, float t, float cell_lo, float cell_hi, Mailbox* mailbox,
                              __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
   float k = accel_transmit(materials, objects, prim);
   if (k == 0.0f) return 0.0f; /* opaque: blocked wherever it is */
@@ -169,7 +169,7 @@ inline float accel_count_hit(float carried, int prim, float t, float cell_lo, fl
   return carried * k;
 }
 
-inline float packet_transmittance(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
+PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
                                   float tmax, float carried, float cell_lo, float cell_hi, Mailbox* mailbox,
                                   __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
   float4 t, u, v;
@@ -202,7 +202,7 @@ inline float packet_transmittance(__global const TriPacketGpu* pk, const PacketR
 }
 
 /* Planes and other unbounded primitives: tested by every ray. */
-inline void unbounded_closest(__global const ObjectGpu* objects, __global const int* list, int count, float3 o,
+PRISM_HOT void unbounded_closest(__global const ObjectGpu* objects, __global const int* list, int count, float3 o,
                               float3 d, float tmin, float* best, HitGpu* hit) {
   for (int i = 0; i < count; ++i) {
     int id = list[i];
@@ -212,7 +212,7 @@ inline void unbounded_closest(__global const ObjectGpu* objects, __global const 
   }
 }
 
-inline float unbounded_transmittance(__global const ObjectGpu* objects, __global const MaterialGpu* materials,
+PRISM_HOT float unbounded_transmittance(__global const ObjectGpu* objects, __global const MaterialGpu* materials,
                                      __global const int* list, int count, float3 o, float3 d, float tmin, float tmax) {
   float carried = 1.0f;
   for (int i = 0; i < count && carried > 0.0f; ++i) {
@@ -224,7 +224,7 @@ inline float unbounded_transmittance(__global const ObjectGpu* objects, __global
 }
 
 /* Entry and exit of the ray in the box at accel_nodes[0..1]: false if it misses. */
-inline bool accel_clip_scene(__global const float4* header, float3 o, float3 inv, float tmin, float tmax, float* t0,
+PRISM_HOT bool accel_clip_scene(__global const float4* header, float3 o, float3 inv, float tmin, float tmax, float* t0,
                              float* t1) {
   float3 lo = header[0].xyz, hi = header[1].xyz;
   float3 a = (lo - o) * inv, b = (hi - o) * inv;

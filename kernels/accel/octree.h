@@ -1,37 +1,46 @@
 /* Octree traversal (host/accel/octree_builder.cpp builds it): front to back
- * through the cells along the ray. In an inner cell the ray's parameters at
- * the three centre planes, sorted, cut its interval into at most four pieces,
- * one per octant it passes (in the spirit of Revelles et al. 2000); the nearest
- * existing octant is entered and the others wait on the stack with their
- * intervals. The closest hit is final as soon as it lies before the exit of
- * the cell being searched, since every cell still waiting is farther.
- * Interval ends are widened by ACCEL_CELL_EPS so rounding never skips an
- * octant the ray grazes. */
+ * through the cells along the ray. Every cell stores the box of its contents
+ * (kernels/shared/octree_node_gpu.h); the stretch of the ray inside that box
+ * is the cell's interval, and a cell whose box the ray misses is skipped. In
+ * an inner cell the ray's parameters at the three centre planes, sorted, cut
+ * its interval into at most four pieces, one per octant it passes (in the
+ * spirit of Revelles et al. 2000); the octants that exist are pushed farthest
+ * first, so the stack holds cells in the order the ray meets them.
+ *
+ * The stack holds cell indices only: a cell's interval is recomputed from its
+ * box when it is entered. Since the boxes lie inside their cells, the entries
+ * of the cells on the stack still grow from top to bottom, so the first cell
+ * that starts after the best hit ends the search.
+ *
+ * Interval ends are widened by ACCEL_CELL_EPS when deciding which octants a
+ * ray passes, so rounding never skips an octant it grazes. */
 #ifndef PRISM_ACCEL_OCTREE_H
 #define PRISM_ACCEL_OCTREE_H
 
+#include "accel/cell_leaf.h"
 #include "accel/leaf_packets.h"
 #include "shared/octree_node_gpu.h"
 
-inline int octree_child(__global const OctreeNodeGpu* n, int octant) {
-  return n->first_child + popcount(n->child_mask & ((1 << octant) - 1));
-}
+typedef struct OctreeWalk {
+  int sp;
+  int stack[PRISM_ACCEL_STACK];
+} OctreeWalk;
 
-inline void octree_push1(__global const OctreeNodeGpu* n, int octant, float lo, float hi, int* stack_node,
-                         float* stack_t0, float* stack_t1, int* sp) {
-  if (!((n->child_mask >> octant) & 1)) return;
-  stack_node[*sp] = octree_child(n, octant);
-  stack_t0[*sp] = lo;
-  stack_t1[*sp] = hi;
-  ++*sp;
+/* Writes octant `octant` on top of the stack and keeps it when `take` and the
+ * octant exists: no branch, since which octants a ray passes is data the
+ * branch predictor cannot learn. */
+PRISM_HOT void octree_push1(__global const OctreeNodeGpu* n, int mask, int octant, bool take, OctreeWalk* w,
+                            int* sp) {
+  w->stack[*sp] = n->first + popcount(mask & ((1 << octant) - 1));
+  *sp += (take && ((mask >> octant) & 1)) ? 1 : 0;
 }
 
 /* Pushes the octants an inner cell's interval [t0, t1] passes, farthest
- * first, so the nearest is on top. The ray's parameters at the three centre
- * planes, sorted, cut the interval into at most four pieces; crossing a plane
- * flips that axis' octant bit. */
-inline void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv, float t0, float t1, int* stack_node,
-                        float* stack_t0, float* stack_t1, int* sp) {
+ * first. The ray's parameters at the three centre planes, sorted, cut the
+ * interval into at most four pieces; crossing a plane flips that axis' octant
+ * bit. */
+PRISM_HOT void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv, float t0, float t1, OctreeWalk* w,
+                           int* sp) {
   float3 tm = ((float3)(n->cx, n->cy, n->cz) - o) * inv;
   float t0e = t0 - ACCEL_CELL_EPS * fabs(t0);
   float t1e = t1 + ACCEL_CELL_EPS * fabs(t1);
@@ -40,101 +49,103 @@ inline void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv, f
   int bits = (inv.x >= 0.0f ? t0e >= tm.x : t0e < tm.x) ? 1 : 0;
   bits |= (inv.y >= 0.0f ? t0e >= tm.y : t0e < tm.y) ? 2 : 0;
   bits |= (inv.z >= 0.0f ? t0e >= tm.z : t0e < tm.z) ? 4 : 0;
-  /* Crossings inside the interval, sorted; the others sink to the end as +inf. */
+  /* Crossings inside the interval, sorted by a network of selects; the others
+   * sink to the end as +inf. Only their order matters: piece k exists when
+   * crossing k-1 does. */
   float s0 = tm.x > t0e && tm.x <= t1e ? tm.x : PRISM_INF;
   float s1 = tm.y > t0e && tm.y <= t1e ? tm.y : PRISM_INF;
   float s2 = tm.z > t0e && tm.z <= t1e ? tm.z : PRISM_INF;
   int a0 = 1, a1 = 2, a2 = 4, ta;
-  float tmp;
-  if (s0 > s1) { tmp = s0; s0 = s1; s1 = tmp; ta = a0; a0 = a1; a1 = ta; }
-  if (s1 > s2) { tmp = s1; s1 = s2; s2 = tmp; ta = a1; a1 = a2; a2 = ta; }
-  if (s0 > s1) { tmp = s0; s0 = s1; s1 = tmp; ta = a0; a0 = a1; a1 = ta; }
-  float e0 = fmin(fmax(s0, t0), t1), e1 = fmin(fmax(s1, t0), t1), e2 = fmin(fmax(s2, t0), t1);
+  float ts;
+  bool swap = s0 > s1;
+  ts = swap ? s1 : s0; s1 = swap ? s0 : s1; s0 = ts;
+  ta = swap ? a1 : a0; a1 = swap ? a0 : a1; a0 = ta;
+  swap = s1 > s2;
+  ts = swap ? s2 : s1; s2 = swap ? s1 : s2; s1 = ts;
+  ta = swap ? a2 : a1; a2 = swap ? a1 : a2; a1 = ta;
+  swap = s0 > s1;
+  s0 = swap ? s1 : s0;
+  ta = swap ? a1 : a0; a1 = swap ? a0 : a1; a0 = ta;
   int b1 = bits ^ a0, b2 = b1 ^ a1, b3 = b2 ^ a2;
-  if (s2 != PRISM_INF) {
-    octree_push1(n, b3, e2, t1, stack_node, stack_t0, stack_t1, sp);
-    octree_push1(n, b2, e1, e2, stack_node, stack_t0, stack_t1, sp);
-    octree_push1(n, b1, e0, e1, stack_node, stack_t0, stack_t1, sp);
-    octree_push1(n, bits, t0, e0, stack_node, stack_t0, stack_t1, sp);
-  } else if (s1 != PRISM_INF) {
-    octree_push1(n, b2, e1, t1, stack_node, stack_t0, stack_t1, sp);
-    octree_push1(n, b1, e0, e1, stack_node, stack_t0, stack_t1, sp);
-    octree_push1(n, bits, t0, e0, stack_node, stack_t0, stack_t1, sp);
-  } else if (s0 != PRISM_INF) {
-    octree_push1(n, b1, e0, t1, stack_node, stack_t0, stack_t1, sp);
-    octree_push1(n, bits, t0, e0, stack_node, stack_t0, stack_t1, sp);
-  } else {
-    octree_push1(n, bits, t0, t1, stack_node, stack_t0, stack_t1, sp);
+  int mask = n->child_mask;
+  octree_push1(n, mask, b3, s2 != PRISM_INF, w, sp);
+  octree_push1(n, mask, b2, s1 != PRISM_INF, w, sp);
+  octree_push1(n, mask, b1, s0 != PRISM_INF, w, sp);
+  octree_push1(n, mask, bits, true, w, sp);
+}
+
+/* The stretch [*t0, *t1] of the ray inside the cell's box, within [tmin,
+ * tmax]; false when there is none. The far distance is widened as in the BVH
+ * (ACCEL_FAR_SCALE) so the float test stays conservative. */
+PRISM_HOT bool octree_clip(__global const OctreeNodeGpu* n, float3 o, float3 inv, float tmin, float tmax, float* t0,
+                           float* t1) {
+  float3 a = ((float3)(n->lo_x, n->lo_y, n->lo_z) - o) * inv;
+  float3 b = ((float3)(n->hi_x, n->hi_y, n->hi_z) - o) * inv;
+  float3 near = min3_t(a, b), far = max3_t(a, b);
+  float tn = max_t(max_t(near.x, near.y), near.z);
+  float tf = min_t(min_t(far.x, far.y), far.z);
+  tf += fabs(tf) * (ACCEL_FAR_SCALE - 1.0f);
+  *t0 = max_t(tmin, tn);
+  *t1 = min_t(tmax, tf);
+  return *t0 <= *t1;
+}
+
+/* The next leaf along the ray; false when no cell is left that starts before
+ * `cutoff` (the best hit so far). */
+PRISM_HOT bool octree_next_leaf(__global const OctreeNodeGpu* nodes, float3 o, float3 inv, float tmin, float tmax,
+                                float cutoff, OctreeWalk* w, CellLeaf* leaf) {
+  int sp = w->sp;
+  for (;;) {
+    if (sp == 0) return false;
+    __global const OctreeNodeGpu* n = nodes + w->stack[--sp];
+    float t0, t1;
+    if (!octree_clip(n, o, inv, tmin, tmax, &t0, &t1)) continue;
+    if (accel_before(cutoff, t0)) return false;
+    if (!n->child_mask) {
+      w->sp = sp;
+      leaf->start = n->first;
+      leaf->count = n->packet_count;
+      leaf->t0 = t0;
+      leaf->t1 = t1;
+      return true;
+    }
+    octree_push(n, o, inv, t0, t1, w, &sp);
   }
 }
 
-inline bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
+PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
   unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, tmin, &best, hit);
   float3 inv = accel_safe_rcp(d);
-  float t0, t1;
-  if (!accel_clip_scene(accel_nodes, o, inv, tmin, best, &t0, &t1)) return hit->prim >= 0;
   PacketRay pr = packet_ray(o, d);
   __global const OctreeNodeGpu* nodes = (__global const OctreeNodeGpu*)(accel_nodes + 2);
-  int stack_node[PRISM_ACCEL_STACK];
-  float stack_t0[PRISM_ACCEL_STACK], stack_t1[PRISM_ACCEL_STACK];
-  int sp = 0;
-  int node = 0;
-  for (;;) {
-    __global const OctreeNodeGpu* n = nodes + node;
-    if (n->child_mask) {
-      octree_push(n, o, inv, t0, t1, stack_node, stack_t0, stack_t1, &sp);
-    } else {
-      int start = n->packet_start, count = n->packet_count;
-      for (int p = 0; p < count; ++p) packet_closest(accel_packets + start + p, &pr, o, d, tmin, &best, hit, objects);
-      if (accel_before(best, t1)) break;
-    }
-    if (sp == 0) break;
-    --sp;
-    node = stack_node[sp];
-    t0 = stack_t0[sp];
-    t1 = stack_t1[sp];
-    if (accel_before(best, t0)) break;
-  }
+  OctreeWalk w;
+  w.sp = 1;
+  w.stack[0] = 0;
+  CellLeaf leaf;
+  while (octree_next_leaf(nodes, o, inv, tmin, best, best, &w, &leaf))
+    if (cell_leaf_closest(&leaf, accel_packets, &pr, o, d, tmin, &best, hit, objects)) break;
   return hit->prim >= 0;
 }
 
-inline float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
-                                 float tmax) {
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d,
+                                    float tmin, float tmax) {
   float carried =
       unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   float3 inv = accel_safe_rcp(d);
-  float t0, t1;
-  if (!accel_clip_scene(accel_nodes, o, inv, tmin, tmax, &t0, &t1)) return carried;
   PacketRay pr = packet_ray(o, d);
   Mailbox mailbox;
   mailbox_init(&mailbox);
   __global const OctreeNodeGpu* nodes = (__global const OctreeNodeGpu*)(accel_nodes + 2);
-  int stack_node[PRISM_ACCEL_STACK];
-  float stack_t0[PRISM_ACCEL_STACK], stack_t1[PRISM_ACCEL_STACK];
-  int sp = 0;
-  int node = 0;
-  for (;;) {
-    __global const OctreeNodeGpu* n = nodes + node;
-    if (n->child_mask) {
-      octree_push(n, o, inv, t0, t1, stack_node, stack_t0, stack_t1, &sp);
-    } else {
-      int start = n->packet_start, count = n->packet_count;
-      float lo = t0 - ACCEL_CELL_EPS * fabs(t0), hi = t1 + ACCEL_CELL_EPS * fabs(t1);
-      for (int p = 0; p < count; ++p) {
-        carried = packet_transmittance(accel_packets + start + p, &pr, o, d, tmin, tmax, carried, lo, hi, &mailbox,
-                                       objects, materials);
-        if (carried == 0.0f) return 0.0f;
-      }
-    }
-    if (sp == 0) break;
-    --sp;
-    node = stack_node[sp];
-    t0 = stack_t0[sp];
-    t1 = stack_t1[sp];
-  }
+  OctreeWalk w;
+  w.sp = 1;
+  w.stack[0] = 0;
+  CellLeaf leaf;
+  while (carried > 0.0f && octree_next_leaf(nodes, o, inv, tmin, tmax, PRISM_INF, &w, &leaf))
+    carried = cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, objects,
+                                      materials);
   return carried;
 }
 

@@ -8,6 +8,25 @@
 
 #define PRISM_INF INFINITY
 
+/* For the small helpers of the traversal loops, which take pointers to a ray's
+ * private state. PoCL's compiler left them as calls (perf showed packet_closest
+ * and the octree's steps as functions of their own), which keeps that state in
+ * memory; clang-based OpenCL compilers honour always_inline, others get the
+ * plain inline hint. */
+#if defined(__clang__)
+#define PRISM_HOT inline __attribute__((always_inline))
+#else
+#define PRISM_HOT inline
+#endif
+
+/* min and max for the traversal's distances, which are never NaN (no 0 * inf:
+ * accel_safe_rcp keeps reciprocals finite): one instruction each, where
+ * fmin/fmax also pay for NaN handling. A tie returns b, as minss does. */
+inline float min_t(float a, float b) { return a < b ? a : b; }
+inline float max_t(float a, float b) { return a > b ? a : b; }
+inline float3 min3_t(float3 a, float3 b) { return select(b, a, a < b); }
+inline float3 max3_t(float3 a, float3 b) { return select(b, a, a > b); }
+
 inline float3 load3(const float* p) { return (float3)(p[0], p[1], p[2]); }
 inline float3 load3g(__global const float* p) { return (float3)(p[0], p[1], p[2]); }
 inline float max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }

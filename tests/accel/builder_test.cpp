@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <set>
@@ -48,29 +49,43 @@ std::set<int> packetPrims(const DeviceAccel& a, std::size_t start, std::size_t c
 struct Cells {
   std::vector<std::pair<CellBox, std::set<int>>> leaves;  // stored cells and their primitives
   std::vector<CellBox> missing;                           // octants / sides with nothing stored
+  std::vector<CellBox> content;                           // octree: leaves[i]'s content box
+  std::size_t boxes_outside_parent = 0;                   // octree: content boxes not inside their parent's
 };
+
+CellBox contentBox(const OctreeNodeGpu& n) {
+  return {{n.lo_x, n.lo_y, n.lo_z}, {n.hi_x, n.hi_y, n.hi_z}};
+}
+
+bool inside(const CellBox& a, const CellBox& b) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (a.lo[axis] < b.lo[axis] || a.hi[axis] > b.hi[axis]) return false;
+  return true;
+}
 
 Cells octreeCells(const DeviceAccel& a) {
   Cells out;
   const OctreeNodeGpu* nodes = nodesOf<OctreeNodeGpu>(a);
-  std::function<void(int, CellBox)> walk = [&](int index, CellBox box) {
+  std::function<void(int, CellBox, CellBox)> walk = [&](int index, CellBox box, CellBox parent_content) {
     const OctreeNodeGpu& n = nodes[index];
+    if (!inside(contentBox(n), parent_content)) ++out.boxes_outside_parent;
     if (!n.child_mask) {
-      out.leaves.push_back({box, packetPrims(a, n.packet_start, n.packet_count)});
+      out.leaves.push_back({box, packetPrims(a, n.first, n.packet_count)});
+      out.content.push_back(contentBox(n));
       return;
     }
     const float c[3] = {n.cx, n.cy, n.cz};
-    int child = n.first_child;
+    int child = n.first;
     for (int k = 0; k < 8; ++k) {
       CellBox o = box;
       for (int axis = 0; axis < 3; ++axis) (k >> axis & 1 ? o.lo[axis] : o.hi[axis]) = c[axis];
       if (n.child_mask >> k & 1)
-        walk(child++, o);
+        walk(child++, o, contentBox(n));
       else
         out.missing.push_back(o);
     }
   };
-  walk(0, headerBox(a));
+  walk(0, headerBox(a), headerBox(a));
   return out;
 }
 
@@ -144,6 +159,47 @@ TEST_CASE("every octree and BSP leaf holds every primitive that meets its cell",
   CHECK(bsp->stats.straddling > 0);
   checkComplete(scene.objects, octreeCells(*octree));
   checkComplete(scene.objects, bspCells(*bsp));
+}
+
+TEST_CASE("an octree cell's content box holds every part of its primitives inside the cell", "[accel][builder]") {
+  // The traversal skips a cell whose content box the ray misses and searches
+  // only the stretch of the ray inside it, so the box must hold the part of
+  // every primitive of the cell that lies in the cell (decided exactly: no
+  // primitive meets the slabs of the cell outside the box), lie in the cell,
+  // and lie in its parent's box.
+  AccelScene scene = mixedScene(3000);
+  auto octree = buildAccel(AccelKind::Octree, scene.objects);
+  Cells cells = octreeCells(*octree);
+  PrimitiveSet prims = gatherPrimitives(scene.objects);
+  std::vector<int> position(scene.objects.size(), -1);
+  for (std::size_t i = 0; i < prims.bounded.size(); ++i) position[prims.bounded[i]] = static_cast<int>(i);
+  std::size_t outside_cell = 0, reaching_out = 0, tested = 0;
+  for (std::size_t leaf = 0; leaf < cells.leaves.size(); ++leaf) {
+    const auto& [cell, ids] = cells.leaves[leaf];
+    const CellBox& box = cells.content[leaf];
+    if (ids.empty()) continue;
+    if (!inside(box, cell)) ++outside_cell;
+    for (int axis = 0; axis < 3; ++axis)
+      for (int side = 0; side < 2; ++side) {
+        CellBox slab = cell;
+        if (side == 0) {
+          slab.hi[axis] = std::nextafter(static_cast<float>(box.lo[axis]), -INFINITY);
+          if (!(slab.hi[axis] >= cell.lo[axis])) continue;
+        } else {
+          slab.lo[axis] = std::nextafter(static_cast<float>(box.hi[axis]), INFINITY);
+          if (!(slab.lo[axis] <= cell.hi[axis])) continue;
+        }
+        for (int id : ids) {
+          ++tested;
+          if (overlapsCell(scene.objects[id], prims.bounds[position[id]], slab, nullptr)) ++reaching_out;
+        }
+      }
+  }
+  INFO(cells.leaves.size() << " leaves, " << tested << " primitive-slab tests");
+  CHECK(tested > 1000);
+  CHECK(outside_cell == 0);
+  CHECK(reaching_out == 0);
+  CHECK(cells.boxes_outside_parent == 0);
 }
 
 TEST_CASE("the BVH holds each bounded primitive once, inside its boxes", "[accel][builder]") {

@@ -1,0 +1,41 @@
+/* What the octree and the BSP (kernels/accel/octree.h, bsp.h) do in a leaf.
+ * Each structure walks its cells front to back with its own descent and
+ * stack and hands every leaf it reaches over as a CellLeaf: the leaf's packets
+ * and the stretch of the ray inside it.
+ *
+ * Cells do not overlap, so a closest hit that lies before the exit of the
+ * leaf being searched is final, and a cell that starts after the best hit
+ * need not be searched. A primitive may sit in several cells: shadow rays
+ * count a hit only in the cell whose interval holds its t (Mailbox,
+ * leaf_packets.h). */
+#ifndef PRISM_ACCEL_CELL_LEAF_H
+#define PRISM_ACCEL_CELL_LEAF_H
+
+#include "accel/leaf_packets.h"
+
+typedef struct CellLeaf {
+  int start, count; /* packets [start, start + count) */
+  float t0, t1;     /* the ray's interval inside the leaf */
+} CellLeaf;
+
+/* Tests the leaf's packets for the closest hit; true when that hit is final. */
+PRISM_HOT bool cell_leaf_closest(const CellLeaf* leaf, __global const TriPacketGpu* packets, const PacketRay* pr,
+                                 float3 o, float3 d, float tmin, float* best, HitGpu* hit,
+                                 __global const ObjectGpu* objects) {
+  for (int p = 0; p < leaf->count; ++p) packet_closest(packets + leaf->start + p, pr, o, d, tmin, best, hit, objects);
+  return accel_before(*best, leaf->t1);
+}
+
+/* Multiplies in the leaf's hits that lie in its (slightly widened) interval. */
+PRISM_HOT float cell_leaf_transmittance(const CellLeaf* leaf, __global const TriPacketGpu* packets,
+                                        const PacketRay* pr, float3 o, float3 d, float tmin, float tmax, float carried,
+                                        Mailbox* mailbox, __global const ObjectGpu* objects,
+                                        __global const MaterialGpu* materials) {
+  float lo = leaf->t0 - ACCEL_CELL_EPS * fabs(leaf->t0), hi = leaf->t1 + ACCEL_CELL_EPS * fabs(leaf->t1);
+  for (int p = 0; p < leaf->count && carried > 0.0f; ++p)
+    carried = packet_transmittance(packets + leaf->start + p, pr, o, d, tmin, tmax, carried, lo, hi, mailbox, objects,
+                                   materials);
+  return carried;
+}
+
+#endif
