@@ -14,6 +14,7 @@
 #include "device/device_list.h"
 #include "mesh/mesh_loader.h"
 #include "mesh/plugin_registry.h"
+#include "bench_plugins.h"
 #include "plot_png.h"
 #include "render/gpu_scene.h"
 #include "render/ray_queries.h"
@@ -35,15 +36,6 @@ struct BenchScene {
   std::vector<std::uint32_t> indices;
 };
 
-const PluginRegistry& registry() {
-  static PluginRegistry r = [] {
-    std::vector<std::string> dirs = PluginRegistry::defaultSearchPath();
-    dirs.push_back(PRISM_BINARY_DIR "/plugins");
-    return PluginRegistry(dirs);
-  }();
-  return r;
-}
-
 BenchScene fromMesh(const std::string& name, const TriangleMesh& mesh) {
   BenchScene s;
   s.name = name;
@@ -57,7 +49,7 @@ BenchScene loadInput(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   const std::string name = std::filesystem::path(path).filename().string();
-  if (ext != ".json") return fromMesh(name, *loadMeshFile(path, registry()));
+  if (ext != ".json") return fromMesh(name, *loadMeshFile(path, benchPlugins()));
   Scene scene = loadSceneFile(path);
   BenchScene s;
   s.name = name;

@@ -16,6 +16,7 @@
 #include "kernels/shared/ray_gpu.h"
 #include "mesh/mesh_loader.h"
 #include "mesh/plugin_registry.h"
+#include "bench_plugins.h"
 #include "plot_png.h"
 #include "render/firsthit.h"
 #include "render/gpu_scene.h"
@@ -28,15 +29,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-const PluginRegistry& registry() {
-  static PluginRegistry r = [] {
-    std::vector<std::string> dirs = PluginRegistry::defaultSearchPath();
-    dirs.push_back(PRISM_BINARY_DIR "/plugins");
-    return PluginRegistry(dirs);
-  }();
-  return r;
-}
 
 template <typename F>
 double medianSeconds(int repeats, F run) {
@@ -192,7 +184,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
   cl_kernel generate = context.kernel("generate.cl", "generate");
   std::vector<FirstHitRow> rows;
   for (const std::string& path : inputs) {
-    SharedMesh mesh = loadMeshFile(path, registry());
+    SharedMesh mesh = loadMeshFile(path, benchPlugins());
     Scene scene = sceneForMesh(mesh);
     RenderOptions render_options = RenderOptions::fromScene(scene);
     render_options.width = options.width;
