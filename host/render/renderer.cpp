@@ -232,8 +232,7 @@ std::vector<float> Renderer::traceFilmPositions(const std::vector<float>& xy,
   if (n == 0) return {};
   // The colours come back to the host, so the device film need only hold one batch
   // (a whole number of slices; the key is the position's index in its batch).
-  constexpr size_t kBatch = 256 * kSliceRays;  // 16M positions, 256 MiB of film
-  const size_t batch = std::min(n, kBatch);
+  const size_t batch = std::min(n, m_film_batch_slices * kSliceRays);
   checkFilmFits(batch, false);
   m_film = Buffer();
   m_film = Buffer(m_context, batch * kFilmBytesPerSample);

@@ -74,6 +74,12 @@ class Renderer {
   // and with it the order of every floating-point sum, is the same on any device.
   static constexpr size_t kSliceRays = 1 << 16;
 
+  // How many slices of adaptive sample positions the device film holds at once
+  // (256 by default: 16M positions, 256 MiB); the colours go back to the host
+  // after each batch. The image does not depend on it; tests set it low to
+  // exercise batching on small images.
+  void setFilmBatchSlices(size_t slices) { m_film_batch_slices = slices > 0 ? slices : 1; }
+
  private:
   // The sampling modes whose positions come from kernels/supersample.cl, resolved
   // by kernels/resolve.cl.
@@ -111,6 +117,7 @@ class Renderer {
   RenderStats* m_stats = nullptr;
   bool m_zbuffer = false;  // wave 0 from the first-hit pass
   int m_spp = 1;           // samples per pixel of the per-pixel modes (1 otherwise)
+  size_t m_film_batch_slices = 256;
   AccelBuffers m_accel;
   Buffer m_camera, m_objects, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
   Buffer m_film;       // rgba per primary sample, indexed by the sample's key

@@ -203,6 +203,30 @@ TEST_CASE("every anti-aliasing mode repeats bit for bit, and the default is none
   CHECK(sameBits(jitter.rgba, sharedRenderer().render(scene, withMode(opt, AaMode::Jitter, 4)).rgba));
 }
 
+TEST_CASE("adaptive sampling gives the same image whether its film is traced in one batch or several",
+          "[render][aa][adaptive]") {
+  // 301 x 241 corners alone are more than one slice (65,536 positions), so with
+  // a film of one slice the positions go through the device in several batches.
+  Scene scene = loadSceneFile(PRISM_SOURCE_DIR "/scenes/whitted.json");
+  RenderOptions opt = withMode(RenderOptions::fromScene(scene), AaMode::Adaptive);
+  opt.width = 300;
+  opt.height = 240;
+  opt.aa_max_level = 2;
+  RenderResult one = sharedRenderer().render(scene, opt);
+  struct RestoreBatch {
+    ~RestoreBatch() { sharedRenderer().setFilmBatchSlices(256); }
+  } restore;
+  sharedRenderer().setFilmBatchSlices(1);
+  RenderResult several = sharedRenderer().render(scene, opt);
+  const double positions = one.stats.rays_per_pixel * opt.width * opt.height;
+  INFO(positions << " positions traced");
+  REQUIRE(positions > 2.0 * Renderer::kSliceRays);
+  CHECK(sameBits(one.rgba, several.rgba));
+  CHECK(one.primid == several.primid);
+  CHECK(sameBits(one.depth, several.depth));
+  CHECK(one.stats.totalRays() == several.stats.totalRays());
+}
+
 TEST_CASE("Z-buffer and traced primary rays render the shared meshes and analytic objects alike",
           "[render][firsthit][mesh]") {
   const std::string bunny = sharedDataDir() + "/meshes/bunny/bun_zipper_res2.ply";
