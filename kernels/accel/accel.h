@@ -21,8 +21,8 @@
  * inlines each file once: the first inclusion must not sit in a skipped branch. */
 #include "accel/leaf_packets.h"
 
-#define ACCEL_PARAMS                                                                                          \
-  __global const ObjectGpu *objects, int object_count, __global const float4 *accel_nodes,                   \
+#define ACCEL_PARAMS                                                                       \
+  __global const ObjectGpu *objects, int object_count, __global const float4 *accel_nodes, \
       __global const TriPacketGpu *accel_packets, __global const int *accel_unbounded, int accel_unbounded_count
 #define ACCEL_ARGS objects, object_count, accel_nodes, accel_packets, accel_unbounded, accel_unbounded_count
 

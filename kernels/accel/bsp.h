@@ -29,8 +29,7 @@ typedef struct BspWalk {
 
 /* Starts at the root with the ray's interval inside the scene's box; false
  * when the ray misses it. */
-PRISM_HOT bool bsp_walk_start(BspWalk* w, __global const float4* header, float3 o, float3 inv, float tmin,
-                              float tmax) {
+PRISM_HOT bool bsp_walk_start(BspWalk* w, __global const float4* header, float3 o, float3 inv, float tmin, float tmax) {
   w->node = 0;
   w->sp = 0;
   return accel_clip_scene(header, o, inv, tmin, tmax, &w->t0, &w->t1);
@@ -105,10 +104,9 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   return hit->prim >= 0;
 }
 
-PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d,
-                                    float tmin, float tmax) {
-  float carried =
-      unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
+                                    float tmax) {
+  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   float3 inv = accel_safe_rcp(d);
   BspWalk w;
@@ -120,8 +118,8 @@ PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* ma
   float org[3] = {o.x, o.y, o.z}, rcp[3] = {inv.x, inv.y, inv.z};
   CellLeaf leaf;
   while (carried > 0.0f && bsp_next_leaf(nodes, org, rcp, PRISM_INF, &w, &leaf))
-    carried = cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, objects,
-                                      materials);
+    carried =
+        cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, objects, materials);
   return carried;
 }
 

@@ -70,7 +70,7 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   int code = 0; /* the root */
   for (;;) {
     if (code >= 0) {
-        __global const float8* n = nodes + 7 * code;
+      __global const float8* n = nodes + 7 * code;
       float8 tn;
       int mask = bvh_node_mask(n, &r, tmin, best, &tn);
       if (mask) {
@@ -116,9 +116,8 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
 }
 
 PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
-                                 float tmax) {
-  float carried =
-      unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
+                                    float tmax) {
+  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   BvhRay r = bvh_ray(o, d);
   PacketRay pr = packet_ray(o, d);

@@ -27,10 +27,9 @@ PRISM_HOT bool cell_leaf_closest(const CellLeaf* leaf, __global const TriPacketG
 }
 
 /* Multiplies in the leaf's hits that lie in its (slightly widened) interval. */
-PRISM_HOT float cell_leaf_transmittance(const CellLeaf* leaf, __global const TriPacketGpu* packets,
-                                        const PacketRay* pr, float3 o, float3 d, float tmin, float tmax, float carried,
-                                        Mailbox* mailbox, __global const ObjectGpu* objects,
-                                        __global const MaterialGpu* materials) {
+PRISM_HOT float cell_leaf_transmittance(const CellLeaf* leaf, __global const TriPacketGpu* packets, const PacketRay* pr,
+                                        float3 o, float3 d, float tmin, float tmax, float carried, Mailbox* mailbox,
+                                        __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
   float lo = leaf->t0 - ACCEL_CELL_EPS * fabs(leaf->t0), hi = leaf->t1 + ACCEL_CELL_EPS * fabs(leaf->t1);
   for (int p = 0; p < leaf->count && carried > 0.0f; ++p)
     carried = packet_transmittance(packets + leaf->start + p, pr, o, d, tmin, tmax, carried, lo, hi, mailbox, objects,

@@ -74,8 +74,8 @@ PRISM_HOT void accel_accept(float t, float u, float v, int prim, float* best, Hi
 
 /* Moller-Trumbore on four triangles: t, u, v and a lane mask of hits in
  * (tmin, tlimit] (or (tmin, tlimit) when `closed` is 0). */
-PRISM_HOT int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay* r, float tmin, float tlimit, int closed,
-                             float4* t_out, float4* u_out, float4* v_out) {
+PRISM_HOT int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay* r, float tmin, float tlimit,
+                                int closed, float4* t_out, float4* u_out, float4* v_out) {
   __global const float4* q = (__global const float4*)pk;
   float4 e1x = q[3], e1y = q[4], e1z = q[5];
   float4 e2x = q[6], e2y = q[7], e2z = q[8];
@@ -100,7 +100,7 @@ PRISM_HOT int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay
 }
 
 PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
-                           float* best, HitGpu* hit, __global const ObjectGpu* objects) {
+                              float* best, HitGpu* hit, __global const ObjectGpu* objects) {
   float4 t, u, v;
   int4 ok = packet_intersect(pk, r, tmin, *best, 1, &t, &u, &v);
   int4 prim = vload4(0, pk->prim);
@@ -159,7 +159,7 @@ PRISM_HOT bool mailbox_first(Mailbox* m, int prim) {
 /* `carried` after a hit at t on prim; cell interval and mailbox only for the
  * spatial subdivisions (mailbox NULL: every hit counts, as in the BVH). */
 PRISM_HOT float accel_count_hit(float carried, int prim, float t, float cell_lo, float cell_hi, Mailbox* mailbox,
-                             __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
+                                __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
   float k = accel_transmit(materials, objects, prim);
   if (k == 0.0f) return 0.0f; /* opaque: blocked wherever it is */
   if (mailbox) {
@@ -169,9 +169,10 @@ PRISM_HOT float accel_count_hit(float carried, int prim, float t, float cell_lo,
   return carried * k;
 }
 
-PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
-                                  float tmax, float carried, float cell_lo, float cell_hi, Mailbox* mailbox,
-                                  __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
+PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d,
+                                     float tmin, float tmax, float carried, float cell_lo, float cell_hi,
+                                     Mailbox* mailbox, __global const ObjectGpu* objects,
+                                     __global const MaterialGpu* materials) {
   float4 t, u, v;
   int4 ok = packet_intersect(pk, r, tmin, tmax, 0, &t, &u, &v);
   int4 prim = vload4(0, pk->prim);
@@ -203,7 +204,7 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
 
 /* Planes and other unbounded primitives: tested by every ray. */
 PRISM_HOT void unbounded_closest(__global const ObjectGpu* objects, __global const int* list, int count, float3 o,
-                              float3 d, float tmin, float* best, HitGpu* hit) {
+                                 float3 d, float tmin, float* best, HitGpu* hit) {
   for (int i = 0; i < count; ++i) {
     int id = list[i];
     float t, u, v;
@@ -213,7 +214,8 @@ PRISM_HOT void unbounded_closest(__global const ObjectGpu* objects, __global con
 }
 
 PRISM_HOT float unbounded_transmittance(__global const ObjectGpu* objects, __global const MaterialGpu* materials,
-                                     __global const int* list, int count, float3 o, float3 d, float tmin, float tmax) {
+                                        __global const int* list, int count, float3 o, float3 d, float tmin,
+                                        float tmax) {
   float carried = 1.0f;
   for (int i = 0; i < count && carried > 0.0f; ++i) {
     int id = list[i];
@@ -225,7 +227,7 @@ PRISM_HOT float unbounded_transmittance(__global const ObjectGpu* objects, __glo
 
 /* Entry and exit of the ray in the box at accel_nodes[0..1]: false if it misses. */
 PRISM_HOT bool accel_clip_scene(__global const float4* header, float3 o, float3 inv, float tmin, float tmax, float* t0,
-                             float* t1) {
+                                float* t1) {
   float3 lo = header[0].xyz, hi = header[1].xyz;
   float3 a = (lo - o) * inv, b = (hi - o) * inv;
   float3 n = fmin(a, b), f = fmax(a, b);

@@ -24,7 +24,7 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
 /* Fraction of light a shadow feeler carries from tmin to tmax: an opaque object
  * blocks it, each semitransparent object it meets multiplies it by k_trans once. */
 PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
-                                 float tmax) {
+                                    float tmax) {
   float carried = 1.0f;
   for (int i = 0; i < object_count && carried > 0.0f; ++i) {
     float t, u, v;

@@ -29,8 +29,7 @@ typedef struct OctreeWalk {
 /* Writes octant `octant` on top of the stack and keeps it when `take` and the
  * octant exists: no branch, since which octants a ray passes is data the
  * branch predictor cannot learn. */
-PRISM_HOT void octree_push1(__global const OctreeNodeGpu* n, int mask, int octant, bool take, OctreeWalk* w,
-                            int* sp) {
+PRISM_HOT void octree_push1(__global const OctreeNodeGpu* n, int mask, int octant, bool take, OctreeWalk* w, int* sp) {
   w->stack[*sp] = n->first + popcount(mask & ((1 << octant) - 1));
   *sp += (take && ((mask >> octant) & 1)) ? 1 : 0;
 }
@@ -57,6 +56,7 @@ PRISM_HOT void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv
   float s2 = tm.z > t0e && tm.z <= t1e ? tm.z : PRISM_INF;
   int a0 = 1, a1 = 2, a2 = 4, ta;
   float ts;
+  // clang-format off
   bool swap = s0 > s1;
   ts = swap ? s1 : s0; s1 = swap ? s0 : s1; s0 = ts;
   ta = swap ? a1 : a0; a1 = swap ? a0 : a1; a0 = ta;
@@ -66,6 +66,7 @@ PRISM_HOT void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv
   swap = s0 > s1;
   s0 = swap ? s1 : s0;
   ta = swap ? a1 : a0; a1 = swap ? a0 : a1; a0 = ta;
+  // clang-format on
   int b1 = bits ^ a0, b2 = b1 ^ a1, b3 = b2 ^ a2;
   int mask = n->child_mask;
   octree_push1(n, mask, b3, s2 != PRISM_INF, w, sp);
@@ -129,10 +130,9 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   return hit->prim >= 0;
 }
 
-PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d,
-                                    float tmin, float tmax) {
-  float carried =
-      unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
+                                    float tmax) {
+  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   float3 inv = accel_safe_rcp(d);
   PacketRay pr = packet_ray(o, d);
@@ -144,8 +144,8 @@ PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* ma
   w.stack[0] = 0;
   CellLeaf leaf;
   while (carried > 0.0f && octree_next_leaf(nodes, o, inv, tmin, tmax, PRISM_INF, &w, &leaf))
-    carried = cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, objects,
-                                      materials);
+    carried =
+        cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, objects, materials);
   return carried;
 }
 
