@@ -73,11 +73,15 @@ double median(std::vector<double> v) {
 // Times every run in turn, one call each per round for `repeats` rounds, and
 // returns each one's median. Interleaved, a change of load on the shared
 // machine touches every contender alike, so the ratios taken in one run stay
-// steadier than when each contender's repeats run back to back.
+// steadier than when each contender's repeats run back to back. Each round
+// starts one contender later, so none always follows the same one.
 std::vector<double> interleavedMedians(int repeats, const std::vector<std::function<double()>>& runs) {
   std::vector<std::vector<double>> times(runs.size());
   for (int r = 0; r < std::max(1, repeats); ++r)
-    for (std::size_t i = 0; i < runs.size(); ++i) times[i].push_back(runs[i]());
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const std::size_t i = (k + static_cast<std::size_t>(r)) % runs.size();
+      times[i].push_back(runs[i]());
+    }
   std::vector<double> out;
   for (auto& t : times) out.push_back(median(t));
   return out;

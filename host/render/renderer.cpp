@@ -248,6 +248,7 @@ std::vector<float> Renderer::traceFilmPositions(const std::vector<float>& xy,
       if (done) done(begin + first + m);
     }
     m_film.read(rgba.data() + 4 * begin, count * kFilmBytesPerSample);
+    ++m_stats->film_batches;
   }
   return rgba;
 }

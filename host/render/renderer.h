@@ -35,6 +35,7 @@ struct RenderStats {
   FilterKind filter = FilterKind::Box;  // the filter applied (tent for quincunx; unused by adaptive)
   FirstHitMode first_hit = FirstHitMode::Trace;  // how wave 0 found its hits: ZBuffer or Trace
   double rays_per_pixel = 0;         // primary samples / pixels
+  int film_batches = 0;              // adaptive: trips of sample colours from the device film to the host
 
   std::uint64_t totalRays() const { return rays_by_kind[0] + rays_by_kind[1] + rays_by_kind[2] + rays_by_kind[3]; }
 };
@@ -79,6 +80,7 @@ class Renderer {
   // after each batch. The image does not depend on it; tests set it low to
   // exercise batching on small images.
   void setFilmBatchSlices(size_t slices) { m_film_batch_slices = slices > 0 ? slices : 1; }
+  size_t filmBatchSlices() const { return m_film_batch_slices; }
 
  private:
   // The sampling modes whose positions come from kernels/supersample.cl, resolved

@@ -139,8 +139,8 @@ PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* ma
       int start, count;
       bvh_leaf_range(code, &start, &count);
       for (int p = 0; p < count; ++p) {
-        carried = packet_transmittance(accel_packets + start + p, &pr, o, d, tmin, tmax, carried, 0.0f, 0.0f, 0,
-                                       objects, materials);
+        carried =
+            packet_transmittance(accel_packets + start + p, &pr, o, d, tmin, tmax, carried, 0, objects, materials);
         if (carried == 0.0f) return 0.0f;
       }
     }

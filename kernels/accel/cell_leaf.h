@@ -6,8 +6,7 @@
  * Cells do not overlap, so a closest hit that lies before the exit of the
  * leaf being searched is final, and a cell that starts after the best hit
  * need not be searched. A primitive may sit in several cells: shadow rays
- * count a hit only in the cell whose interval holds its t (Mailbox,
- * leaf_packets.h). */
+ * count it in the first cell that finds it (Mailbox, leaf_packets.h). */
 #ifndef PRISM_ACCEL_CELL_LEAF_H
 #define PRISM_ACCEL_CELL_LEAF_H
 
@@ -26,14 +25,14 @@ PRISM_HOT bool cell_leaf_closest(const CellLeaf* leaf, __global const TriPacketG
   return accel_before(*best, leaf->t1);
 }
 
-/* Multiplies in the leaf's hits that lie in its (slightly widened) interval. */
+/* Multiplies in the k_trans of the leaf's primitives the segment meets, each
+ * once over the whole walk. */
 PRISM_HOT float cell_leaf_transmittance(const CellLeaf* leaf, __global const TriPacketGpu* packets, const PacketRay* pr,
                                         float3 o, float3 d, float tmin, float tmax, float carried, Mailbox* mailbox,
                                         __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
-  float lo = leaf->t0 - ACCEL_CELL_EPS * fabs(leaf->t0), hi = leaf->t1 + ACCEL_CELL_EPS * fabs(leaf->t1);
   for (int p = 0; p < leaf->count && carried > 0.0f; ++p)
-    carried = packet_transmittance(packets + leaf->start + p, pr, o, d, tmin, tmax, carried, lo, hi, mailbox, objects,
-                                   materials);
+    carried =
+        packet_transmittance(packets + leaf->start + p, pr, o, d, tmin, tmax, carried, mailbox, objects, materials);
   return carried;
 }
 

@@ -133,58 +133,55 @@ PRISM_HOT float accel_transmit(__global const MaterialGpu* materials, __global c
 }
 
 /* Primitives already multiplied into a shadow ray in the spatial
- * subdivisions, where one primitive sits in several cells. A hit counts in the
- * cell whose (slightly widened) interval holds its t, and the mailbox keeps a
- * hit on a shared cell boundary from counting in both cells. */
-#define MAILBOX_SIZE 8
+ * subdivisions, where one primitive sits in several cells: a hit counts in the
+ * first cell that finds it and the mailbox keeps it from counting again. (A
+ * rule that counted a hit only in the cell whose interval holds its t lost
+ * hits whose float t fell just outside every cell's interval.) The last
+ * MAILBOX_SIZE counted primitives are remembered, so a primitive could count
+ * twice only if the ray crossed more than that many other semitransparent
+ * surfaces between two cells that hold it. Entries are filled in order and
+ * only the filled ones are searched, so starting a ray costs one store. */
+#define MAILBOX_SIZE 16
 typedef struct Mailbox {
   int ids[MAILBOX_SIZE];
-  int next;
+  int count; /* primitives offered for the first time so far */
 } Mailbox;
 
-PRISM_HOT void mailbox_init(Mailbox* m) {
-  for (int i = 0; i < MAILBOX_SIZE; ++i) m->ids[i] = -1;
-  m->next = 0;
-}
+PRISM_HOT void mailbox_init(Mailbox* m) { m->count = 0; }
 
 /* True the first time `prim` is offered. */
 PRISM_HOT bool mailbox_first(Mailbox* m, int prim) {
-  for (int i = 0; i < MAILBOX_SIZE; ++i)
+  int filled = m->count < MAILBOX_SIZE ? m->count : MAILBOX_SIZE;
+  for (int i = 0; i < filled; ++i)
     if (m->ids[i] == prim) return false;
-  m->ids[m->next] = prim;
-  m->next = (m->next + 1) % MAILBOX_SIZE;
+  m->ids[m->count % MAILBOX_SIZE] = prim;
+  ++m->count;
   return true;
 }
 
-/* `carried` after a hit at t on prim; cell interval and mailbox only for the
- * spatial subdivisions (mailbox NULL: every hit counts, as in the BVH). */
-PRISM_HOT float accel_count_hit(float carried, int prim, float t, float cell_lo, float cell_hi, Mailbox* mailbox,
-                                __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
+/* `carried` after a hit on prim; the mailbox only for the spatial subdivisions
+ * (NULL: every hit counts, as in the BVH, which holds each primitive once). */
+PRISM_HOT float accel_count_hit(float carried, int prim, Mailbox* mailbox, __global const ObjectGpu* objects,
+                                __global const MaterialGpu* materials) {
   float k = accel_transmit(materials, objects, prim);
   if (k == 0.0f) return 0.0f; /* opaque: blocked wherever it is */
-  if (mailbox) {
-    if (t < cell_lo || t > cell_hi) return carried;
-    if (!mailbox_first(mailbox, prim)) return carried;
-  }
+  if (mailbox && !mailbox_first(mailbox, prim)) return carried;
   return carried * k;
 }
 
 PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d,
-                                     float tmin, float tmax, float carried, float cell_lo, float cell_hi,
-                                     Mailbox* mailbox, __global const ObjectGpu* objects,
-                                     __global const MaterialGpu* materials) {
+                                     float tmin, float tmax, float carried, Mailbox* mailbox,
+                                     __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
   float4 t, u, v;
   int4 ok = packet_intersect(pk, r, tmin, tmax, 0, &t, &u, &v);
   int4 prim = vload4(0, pk->prim);
   if (any(ok)) {
-    float ta[4];
     int oka[4], pa[4];
-    vstore4(t, 0, ta);
     vstore4(ok, 0, oka);
     vstore4(prim, 0, pa);
     for (int k = 0; k < 4; ++k) {
       if (!oka[k]) continue;
-      carried = accel_count_hit(carried, pa[k], ta[k], cell_lo, cell_hi, mailbox, objects, materials);
+      carried = accel_count_hit(carried, pa[k], mailbox, objects, materials);
       if (carried == 0.0f) return 0.0f;
     }
   }
@@ -194,7 +191,7 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
       if (id < 0) continue;
       float tt, uu, vv;
       if (object_intersect(&objects[id], o, d, tmin, tmax, &tt, &uu, &vv)) {
-        carried = accel_count_hit(carried, id, tt, cell_lo, cell_hi, mailbox, objects, materials);
+        carried = accel_count_hit(carried, id, mailbox, objects, materials);
         if (carried == 0.0f) return 0.0f;
       }
     }

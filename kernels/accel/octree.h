@@ -10,7 +10,8 @@
  * The stack holds cell indices only: a cell's interval is recomputed from its
  * box when it is entered. Since the boxes lie inside their cells, the entries
  * of the cells on the stack still grow from top to bottom, so the first cell
- * that starts after the best hit ends the search.
+ * that starts after the best hit ends the search. Shadow rays count each
+ * primitive in the first leaf that finds it (accel/cell_leaf.h).
  *
  * Interval ends are widened by ACCEL_CELL_EPS when deciding which octants a
  * ray passes, so rounding never skips an octant it grazes. */
@@ -75,33 +76,38 @@ PRISM_HOT void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv
   octree_push1(n, mask, bits, true, w, sp);
 }
 
-/* The stretch [*t0, *t1] of the ray inside the cell's box, within [tmin,
- * tmax]; false when there is none. The far distance is widened as in the BVH
- * (ACCEL_FAR_SCALE) so the float test stays conservative. */
-PRISM_HOT bool octree_clip(__global const OctreeNodeGpu* n, float3 o, float3 inv, float tmin, float tmax, float* t0,
-                           float* t1) {
+/* Widens a far distance as the BVH does (ACCEL_FAR_SCALE, Ize 2013), so that
+ * float slab tests stay conservative; on either sign of t. */
+PRISM_HOT float octree_far(float t) { return t * (t >= 0.0f ? ACCEL_FAR_SCALE : 2.0f - ACCEL_FAR_SCALE); }
+
+/* The stretch [*t0, *t1] of the ray inside the cell's box, from tmin on;
+ * false when the ray misses the box. */
+PRISM_HOT bool octree_clip(__global const OctreeNodeGpu* n, float3 o, float3 inv, float tmin, float* t0, float* t1) {
   float3 a = ((float3)(n->lo_x, n->lo_y, n->lo_z) - o) * inv;
   float3 b = ((float3)(n->hi_x, n->hi_y, n->hi_z) - o) * inv;
   float3 near = min3_t(a, b), far = max3_t(a, b);
-  float tn = max_t(max_t(near.x, near.y), near.z);
-  float tf = min_t(min_t(far.x, far.y), far.z);
-  tf += fabs(tf) * (ACCEL_FAR_SCALE - 1.0f);
-  *t0 = max_t(tmin, tn);
-  *t1 = min_t(tmax, tf);
+  *t0 = max_t(max_t(max_t(near.x, near.y), near.z), tmin);
+  *t1 = octree_far(min_t(min_t(far.x, far.y), far.z));
   return *t0 <= *t1;
 }
 
 /* The next leaf along the ray; false when no cell is left that starts before
- * `cutoff` (the best hit so far). */
+ * `cutoff` (the best hit so far). A cell is dropped only once its entry lies
+ * beyond the cutoff by ACCEL_CELL_EPS (accel_before) or beyond the widened
+ * tmax, so a primitive that ties the best hit to the last bits is still
+ * reached. */
 PRISM_HOT bool octree_next_leaf(__global const OctreeNodeGpu* nodes, float3 o, float3 inv, float tmin, float tmax,
                                 float cutoff, OctreeWalk* w, CellLeaf* leaf) {
+  const float tmax_far = octree_far(tmax);
   int sp = w->sp;
   for (;;) {
     if (sp == 0) return false;
     __global const OctreeNodeGpu* n = nodes + w->stack[--sp];
     float t0, t1;
-    if (!octree_clip(n, o, inv, tmin, tmax, &t0, &t1)) continue;
+    if (!octree_clip(n, o, inv, tmin, &t0, &t1)) continue;
     if (accel_before(cutoff, t0)) return false;
+    t1 = min_t(t1, tmax_far);
+    if (t0 > t1) continue;
     if (!n->child_mask) {
       w->sp = sp;
       leaf->start = n->first;
@@ -125,7 +131,7 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   w.sp = 1;
   w.stack[0] = 0;
   CellLeaf leaf;
-  while (octree_next_leaf(nodes, o, inv, tmin, best, best, &w, &leaf))
+  while (octree_next_leaf(nodes, o, inv, tmin, tmax, best, &w, &leaf))
     if (cell_leaf_closest(&leaf, accel_packets, &pr, o, d, tmin, &best, hit, objects)) break;
   return hit->prim >= 0;
 }

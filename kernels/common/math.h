@@ -19,8 +19,9 @@
 #define PRISM_HOT inline
 #endif
 
-/* min and max for the traversal's distances, which are never NaN (no 0 * inf:
- * accel_safe_rcp keeps reciprocals finite): one instruction each, where
+/* min and max for the traversal's distances, which are finite or infinite but
+ * never NaN (no 0 * inf: accel_safe_rcp keeps reciprocals finite, and no
+ * inf - inf: boxes are finite or inverted): one instruction each, where
  * fmin/fmax also pay for NaN handling. A tie returns b, as minss does. */
 inline float min_t(float a, float b) { return a < b ? a : b; }
 inline float max_t(float a, float b) { return a > b ? a : b; }

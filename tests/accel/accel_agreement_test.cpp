@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -215,6 +216,90 @@ TEST_CASE("all structures agree on the shared meshes", "[accel]") {
                            "dragon/dragon_vcg_43k.ply"}) {
     SharedMesh mesh = loadSharedMesh(file);
     checkScene(meshScene(file, *mesh), 20000, 128, 3000);
+  }
+}
+
+// Two thousand triangles a few millimetres across, each with a vertex on the
+// plane y = 0 (itself in the scene), seen from several units away: rays aimed
+// at those vertices meet a triangle and the plane at the same t, or a triangle
+// a few ulps before or after its neighbour, so a cell dropped one ulp too early
+// loses the hit and a transmittance counted by cell intervals loses it too.
+struct TinyTriangles {
+  AccelScene scene;
+  std::vector<QueryRay> rays;
+};
+
+TinyTriangles tinyTrianglesOnAPlane(std::size_t ray_count) {
+  TinyTriangles out;
+  out.scene.name = "tiny triangles on a plane";
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<float> u01(0, 1);
+  std::vector<std::array<float, 3>> feet;
+  for (int i = 0; i < 2000; ++i) {
+    ObjectGpu g = identityObject(OBJECT_TRIANGLE, 0);
+    const float x = 4 * u01(rng), z = 4 * u01(rng);
+    const float v[9] = {x, 0, z, x + 0.001f, 0.003f, z, x - 0.0005f, 0.003f + 0.001f * u01(rng), z + 0.001f};
+    std::copy(v, v + 9, g.p);
+    out.scene.objects.push_back(g);
+    feet.push_back({x, 0, z});
+  }
+  ObjectGpu plane = identityObject(OBJECT_PLANE, 0);
+  plane.p[4] = 1;  // normal +y through the origin
+  out.scene.objects.push_back(plane);
+  for (std::size_t k = 0; k < ray_count; ++k) {
+    const auto& f = feet[rng() % feet.size()];
+    const float o[3] = {-2 + 8 * u01(rng), -5.0f - 5 * u01(rng), -2 + 8 * u01(rng)};
+    const float scale = 0.3f + 3 * u01(rng);  // the direction's length changes every t
+    out.rays.push_back(QueryRay{o[0], o[1], o[2], 0, (f[0] - o[0]) * scale, (f[1] - o[1]) * scale,
+                                (f[2] - o[2]) * scale, INFINITY});
+  }
+  return out;
+}
+
+TEST_CASE("closest hits at exact ties and a few ulps apart: every structure answers as brute force", "[accel]") {
+  // Strict: the same primitive (an exact tie goes to the lower id) and the
+  // same t, u, v bits as `none`, on every ray.
+  TinyTriangles tiny = tinyTrianglesOnAPlane(40000);
+  RayQueryEngine none(sharedContext(), tiny.scene.objects, AccelKind::None);
+  const std::vector<HitGpu> ref = none.intersect(tiny.rays);
+  std::size_t on_plane = 0;
+  for (const HitGpu& h : ref) on_plane += h.prim == 2000;
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+    RayQueryEngine engine(sharedContext(), tiny.scene.objects, kind);
+    const std::vector<HitGpu> got = engine.intersect(tiny.rays);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < ref.size(); ++i)
+      differ += !(ref[i].prim == got[i].prim && sameBits(ref[i].t, got[i].t) && sameBits(ref[i].u, got[i].u) &&
+                  sameBits(ref[i].v, got[i].v));
+    INFO(accelName(kind) << ": " << differ << " of " << ref.size() << " rays differ; " << on_plane
+                         << " reference hits on the plane");
+    CHECK(differ == 0);
+  }
+}
+
+TEST_CASE("transmittance counts each semitransparent primitive once, however its t rounds", "[accel]") {
+  // k_trans 0.5 is a power of two, so the product is exact in any order; the
+  // segments end just past the plane y = 0, where the triangles stand.
+  TinyTriangles tiny = tinyTrianglesOnAPlane(40000);
+  tiny.scene.materials = {materialWithTransmit(0.5f)};
+  const ObjectGpu plane = tiny.scene.objects.back();
+  tiny.scene.objects.pop_back();
+  RayQueryEngine floor(sharedContext(), {plane}, AccelKind::None);
+  const std::vector<HitGpu> ground = floor.intersect(tiny.rays);
+  for (std::size_t i = 0; i < tiny.rays.size(); ++i) tiny.rays[i].tmax = std::nextafter(ground[i].t, INFINITY);
+  const std::vector<RayGpu> rays = toRayGpu(tiny.rays);
+  RayQueryEngine none(sharedContext(), tiny.scene.objects, AccelKind::None, tiny.scene.materials);
+  const std::vector<float> ref = none.transmittance(rays);
+  std::size_t attenuated = 0;
+  for (float t : ref) attenuated += t < 1;
+  REQUIRE(attenuated > ref.size() / 10);
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+    RayQueryEngine engine(sharedContext(), tiny.scene.objects, kind, tiny.scene.materials);
+    const std::vector<float> got = engine.transmittance(rays);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < ref.size(); ++i) differ += !sameBits(ref[i], got[i]);
+    INFO(accelName(kind) << ": " << differ << " of " << ref.size() << " transmittances differ");
+    CHECK(differ == 0);
   }
 }
 

@@ -165,20 +165,28 @@ TEST_CASE("an octree cell's content box holds every part of its primitives insid
   // The traversal skips a cell whose content box the ray misses and searches
   // only the stretch of the ray inside it, so the box must hold the part of
   // every primitive of the cell that lies in the cell (decided exactly: no
-  // primitive meets the slabs of the cell outside the box), lie in the cell,
-  // and lie in its parent's box.
+  // primitive meets the slabs of the cell outside the box; and the part
+  // clipped in double lies in it), lie in the cell, and lie in its parent's box.
   AccelScene scene = mixedScene(3000);
   auto octree = buildAccel(AccelKind::Octree, scene.objects);
   Cells cells = octreeCells(*octree);
   PrimitiveSet prims = gatherPrimitives(scene.objects);
   std::vector<int> position(scene.objects.size(), -1);
   for (std::size_t i = 0; i < prims.bounded.size(); ++i) position[prims.bounded[i]] = static_cast<int>(i);
-  std::size_t outside_cell = 0, reaching_out = 0, tested = 0;
+  std::size_t outside_cell = 0, reaching_out = 0, tested = 0, clipped_outside = 0, clipped = 0;
   for (std::size_t leaf = 0; leaf < cells.leaves.size(); ++leaf) {
     const auto& [cell, ids] = cells.leaves[leaf];
     const CellBox& box = cells.content[leaf];
     if (ids.empty()) continue;
     if (!inside(box, cell)) ++outside_cell;
+    // The part of each primitive inside the cell, clipped in double and
+    // rounded outward (the BSP's perfect-split bounds), lies in the box.
+    for (int id : ids) {
+      Aabb part = clippedBounds(scene.objects[id], prims.bounds[position[id]], cell);
+      if (part.empty()) continue;
+      ++clipped;
+      if (!inside(toCell(part), box)) ++clipped_outside;
+    }
     for (int axis = 0; axis < 3; ++axis)
       for (int side = 0; side < 2; ++side) {
         CellBox slab = cell;
@@ -195,8 +203,10 @@ TEST_CASE("an octree cell's content box holds every part of its primitives insid
         }
       }
   }
-  INFO(cells.leaves.size() << " leaves, " << tested << " primitive-slab tests");
+  INFO(cells.leaves.size() << " leaves, " << tested << " primitive-slab tests, " << clipped << " clipped parts");
   CHECK(tested > 1000);
+  CHECK(clipped > 1000);
+  CHECK(clipped_outside == 0);
   CHECK(outside_cell == 0);
   CHECK(reaching_out == 0);
   CHECK(cells.boxes_outside_parent == 0);

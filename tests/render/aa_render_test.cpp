@@ -214,13 +214,17 @@ TEST_CASE("adaptive sampling gives the same image whether its film is traced in 
   opt.aa_max_level = 2;
   RenderResult one = sharedRenderer().render(scene, opt);
   struct RestoreBatch {
-    ~RestoreBatch() { sharedRenderer().setFilmBatchSlices(256); }
+    size_t slices = sharedRenderer().filmBatchSlices();
+    ~RestoreBatch() { sharedRenderer().setFilmBatchSlices(slices); }
   } restore;
   sharedRenderer().setFilmBatchSlices(1);
   RenderResult several = sharedRenderer().render(scene, opt);
   const double positions = one.stats.rays_per_pixel * opt.width * opt.height;
   INFO(positions << " positions traced");
   REQUIRE(positions > 2.0 * Renderer::kSliceRays);
+  // Each adaptive pass traces its new positions in batches of the film's size.
+  CHECK(several.stats.film_batches > one.stats.film_batches);
+  CHECK(one.stats.film_batches <= 1 + opt.aa_max_level);
   CHECK(sameBits(one.rgba, several.rgba));
   CHECK(one.primid == several.primid);
   CHECK(sameBits(one.depth, several.depth));
