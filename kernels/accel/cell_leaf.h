@@ -25,8 +25,8 @@ PRISM_HOT bool cell_leaf_closest(const CellLeaf* leaf, __global const TriPacketG
   return accel_before(*best, leaf->t1);
 }
 
-/* Multiplies in the k_trans of the leaf's primitives the segment meets, each
- * once over the whole walk. */
+/* Multiplies in the k_trans of the leaf's primitives the segment meets that
+ * the mailbox has not counted yet. */
 PRISM_HOT float cell_leaf_transmittance(const CellLeaf* leaf, __global const TriPacketGpu* packets, const PacketRay* pr,
                                         float3 o, float3 d, float tmin, float tmax, float carried, Mailbox* mailbox,
                                         __global const ObjectGpu* objects, __global const MaterialGpu* materials) {

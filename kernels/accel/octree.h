@@ -10,8 +10,7 @@
  * The stack holds cell indices only: a cell's interval is recomputed from its
  * box when it is entered. Since the boxes lie inside their cells, the entries
  * of the cells on the stack still grow from top to bottom, so the first cell
- * that starts after the best hit ends the search. Shadow rays count each
- * primitive in the first leaf that finds it (accel/cell_leaf.h).
+ * that starts after the best hit ends the search.
  *
  * Interval ends are widened by ACCEL_CELL_EPS when deciding which octants a
  * ray passes, so rounding never skips an octant it grazes. */
@@ -95,10 +94,10 @@ PRISM_HOT bool octree_clip(__global const OctreeNodeGpu* n, float3 o, float3 inv
  * `cutoff` (the best hit so far). A cell is dropped only once its entry lies
  * beyond the cutoff by ACCEL_CELL_EPS (accel_before) or beyond the widened
  * tmax, so a primitive that ties the best hit to the last bits is still
- * reached. `ordered` false (shadow rays, where the order of the cells does not
- * matter): every stored octant is pushed and the boxes of those the ray misses
- * drop them on entry, which costs less than working out the octants the ray
- * passes (shadow rays 1.2-1.3x faster, measured with prism-bench). */
+ * reached. `ordered` false (where the order of the cells does not matter):
+ * every stored octant is pushed and the boxes of those the ray misses drop
+ * them on entry, which costs less than working out the octants the ray passes
+ * (shadow rays 1.2-1.3x faster, measured with prism-bench). */
 PRISM_HOT bool octree_next_leaf(__global const OctreeNodeGpu* nodes, float3 o, float3 inv, float tmin, float tmax,
                                 float cutoff, bool ordered, OctreeWalk* w, CellLeaf* leaf) {
   const float tmax_far = octree_far(tmax);
@@ -143,15 +142,18 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   return hit->prim >= 0;
 }
 
+/* Shadow rays walk the cells in any order (every stored octant pushed, the
+ * content boxes dropping the ones missed: cheaper than ordering them); the
+ * mailbox counts each primitive once whatever the order. */
 PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
                                     float tmax) {
   float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   float3 inv = accel_safe_rcp(d);
   PacketRay pr = packet_ray(o, d);
+  __global const OctreeNodeGpu* nodes = (__global const OctreeNodeGpu*)(accel_nodes + 2);
   Mailbox mailbox;
   mailbox_init(&mailbox);
-  __global const OctreeNodeGpu* nodes = (__global const OctreeNodeGpu*)(accel_nodes + 2);
   OctreeWalk w;
   w.sp = 1;
   w.stack[0] = 0;
