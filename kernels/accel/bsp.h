@@ -13,50 +13,48 @@
 #include "accel/leaf_packets.h"
 #include "shared/bsp_node_gpu.h"
 
-/* The walk's state between leaves: the cell to enter next with its interval
- * (node -1 once under way), and the far sides waiting with theirs. The
- * descent keeps the cell, its interval and the stack pointer in locals and
- * touches this struct only to push, pop and stop at a leaf: kept here during
- * the descent they went through memory at every step, which cost the BSP a
- * third of its speed (measured with prism-bench). */
+/* The far sides waiting, nearest on top, with the ray's interval in each;
+ * the walk starts with the root alone. The descent keeps the cell, its
+ * interval and the stack pointer in locals and touches this struct only to
+ * push, pop and stop at a leaf: kept here during the descent they went
+ * through memory at every step, which cost the BSP a third of its speed
+ * (measured with prism-bench). */
 typedef struct BspWalk {
-  int node;
-  float t0, t1;
   int sp;
   int stack_node[PRISM_ACCEL_STACK];
   float stack_t0[PRISM_ACCEL_STACK], stack_t1[PRISM_ACCEL_STACK];
 } BspWalk;
 
-/* Starts at the root with the ray's interval inside the scene's box; false
+/* Starts with the root and the ray's interval inside the scene's box; false
  * when the ray misses it. */
 PRISM_HOT bool bsp_walk_start(BspWalk* w, __global const float4* header, float3 o, float3 inv, float tmin, float tmax) {
-  w->node = 0;
+  float t0, t1;
   w->sp = 0;
-  return accel_clip_scene(header, o, inv, tmin, tmax, &w->t0, &w->t1);
+  if (!accel_clip_scene(header, o, inv, tmin, tmax, &t0, &t1)) return false;
+  w->stack_node[0] = 0;
+  w->stack_t0[0] = t0;
+  w->stack_t1[0] = t1;
+  w->sp = 1;
+  return true;
 }
 
 /* The next leaf along the ray; false when no cell is left that starts before
- * `cutoff` (the best hit so far). Descends from the cell to enter, pushing far
- * sides. The ray's origin and reciprocal direction come as 3-element arrays. */
+ * `cutoff` (the best hit so far). Descends from the nearest waiting cell,
+ * pushing far sides. The ray's origin and reciprocal direction come as 3-element arrays. */
 PRISM_HOT bool bsp_next_leaf(__global const BspNodeGpu* nodes, const float* org, const float* rcp, float cutoff,
                              BspWalk* w, CellLeaf* leaf) {
-  int node = w->node, sp = w->sp;
-  float t0 = w->t0, t1 = w->t1;
-  if (node < 0) {
-    if (sp == 0) return false;
-    --sp;
-    node = w->stack_node[sp];
-    t0 = w->stack_t0[sp];
-    t1 = w->stack_t1[sp];
-    if (accel_before(cutoff, t0)) return false;
-  }
+  int sp = w->sp;
+  if (sp == 0) return false;
+  --sp;
+  int node = w->stack_node[sp];
+  float t0 = w->stack_t0[sp], t1 = w->stack_t1[sp];
+  if (accel_before(cutoff, t0)) return false;
   float t0e = t0 - ACCEL_CELL_EPS * fabs(t0);
   float t1e = t1 + ACCEL_CELL_EPS * fabs(t1);
   for (;;) {
     BspNodeGpu n = nodes[node];
     int axis = n.word & 3;
     if (axis == BSP_LEAF) {
-      w->node = -1;
       w->sp = sp;
       leaf->start = n.word >> 2;
       leaf->count = n.payload;

@@ -26,6 +26,12 @@ typedef struct OctreeWalk {
   int stack[PRISM_ACCEL_STACK];
 } OctreeWalk;
 
+/* Starts with the root alone; its content box clips the ray on entry. */
+PRISM_HOT void octree_walk_start(OctreeWalk* w) {
+  w->stack[0] = 0;
+  w->sp = 1;
+}
+
 /* Writes octant `octant` on top of the stack and keeps it when `take` and the
  * octant exists: no branch, since which octants a ray passes is data the
  * branch predictor cannot learn. */
@@ -134,8 +140,7 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   PacketRay pr = packet_ray(o, d);
   __global const OctreeNodeGpu* nodes = (__global const OctreeNodeGpu*)(accel_nodes + 2);
   OctreeWalk w;
-  w.sp = 1;
-  w.stack[0] = 0;
+  octree_walk_start(&w);
   CellLeaf leaf;
   while (octree_next_leaf(nodes, o, inv, tmin, tmax, best, true, &w, &leaf))
     if (cell_leaf_closest(&leaf, accel_packets, &pr, o, d, tmin, &best, hit, objects)) break;
@@ -155,8 +160,7 @@ PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* ma
   Mailbox mailbox;
   mailbox_init(&mailbox);
   OctreeWalk w;
-  w.sp = 1;
-  w.stack[0] = 0;
+  octree_walk_start(&w);
   CellLeaf leaf;
   while (carried > 0.0f && octree_next_leaf(nodes, o, inv, tmin, tmax, PRISM_INF, false, &w, &leaf))
     carried =
