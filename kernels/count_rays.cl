@@ -1,5 +1,5 @@
 /* count_rays: the first pass of stable queue compaction. Work-item b counts the
- * live rays of each kind in slots [b*block, (b+1)*block); the host turns the
+ * live rays of each kind in slots [b*block, (b+1)*block); scan_blocks turns the
  * counts into output offsets (an exclusive scan), then scatter_rays moves them. */
 #include "shared/ray_gpu.h"
 

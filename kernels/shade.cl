@@ -1,19 +1,23 @@
-/* shade: Whitted's local model at each ray's hit, and the rays it spawns.
- *   - emit[k]: the ray's ambient term (or the background on a miss), weighted;
- *   - shadows[k * light_count + l]: a shadow feeler towards light l carrying the
- *     diffuse + specular light it would bring, or an empty slot;
- *   - children[2k], children[2k+1]: the reflected and the refracted ray, each
+/* shade: the local model's ambient part at each ray's hit, and what the hit
+ * spawns.
+ *   - emit[k]: the ray's ambient term, the background on a miss, or the radiance
+ *     of an area light it meets before any object; weighted;
+ *   - surfaces[k]: the shaded point, from which spawn_shadows sends the shadow
+ *     feelers (the same number per ray, DESIGN.md), or no surface;
+ *   - children[2k], children[2k+1]: the reflected and the refracted ray, their
+ *     directions sampled from the material's lobes (shading/material.h), each
  *     with weight = parent weight x coefficient, or empty slots when the branch
  *     ends (max depth reached, coefficient zero, weight under min_weight).
  * Primary rays with an AOV pixel (ray.aov_pixel >= 0, one sample per pixel
  * chosen by the sampler) also write that pixel's AOVs. */
 #include "geometry/object.h"
-#include "shading/local.h"
-#include "shading/optics.h"
+#include "sampling/dimensions.h"
+#include "shading/light.h"
+#include "shading/material.h"
 #include "shading/ray_io.h"
 #include "shading/texture.h"
 #include "shared/contribution_gpu.h"
-#include "shared/light_gpu.h"
+#include "shared/surface_gpu.h"
 
 inline void write_aovs(int pixel, float depth, float3 n, int prim, float3 albedo, __global float* aov_depth,
                        __global float* aov_normal, __global int* aov_primid, __global float* aov_albedo) {
@@ -34,12 +38,15 @@ inline ContributionGpu contribution(float3 c, float a, int pixel) {
   return out;
 }
 
+inline void put4(__global float* dst, float3 v, float w) { vstore4((float4)(v, w), 0, dst); }
+
 __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count,
                     __global const ObjectGpu* objects, __global const MaterialGpu* materials,
-                    __global const LightGpu* lights, int light_count, float4 ambient, float4 background,
-                    int max_depth, float min_weight, __global ContributionGpu* emit, __global RayGpu* children,
-                    __global RayGpu* shadows, __global float* aov_depth, __global float* aov_normal,
-                    __global int* aov_primid, __global float* aov_albedo) {
+                    __global const LightGpu* lights, int light_count, int area_lights, float4 ambient,
+                    float4 background, int max_depth, float min_weight, uint seed, int strata,
+                    __global ContributionGpu* emit, __global RayGpu* children, __global SurfaceGpu* surfaces,
+                    __global float* aov_depth, __global float* aov_normal, __global int* aov_primid,
+                    __global float* aov_albedo) {
   int k = get_global_id(0);
   if (k >= count) return;
   RayGpu ray = rays[k];
@@ -47,10 +54,31 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   float3 weight = ray_weight(ray);
   bool primary = ray.kind == RAY_KIND_PRIMARY;
   bool writes_aovs = primary && ray.aov_pixel >= 0;
+  float3 o = ray_origin(ray), d = ray_dir(ray);
 
-  for (int l = 0; l < light_count; ++l) shadows[k * light_count + l] = ray_empty();
   children[2 * k] = ray_empty();
   children[2 * k + 1] = ray_empty();
+  surfaces[k].material = -1;
+
+  /* An area light in front of the hit (or of nothing) is what the ray sees. */
+  if (area_lights) {
+    float t_light = hit.prim < 0 ? PRISM_INF : hit.t;
+    int seen = -1;
+    for (int l = 0; l < light_count; ++l) {
+      float t = light_hit(&lights[l], o, d, t_light);
+      if (t < t_light) {
+        t_light = t;
+        seen = l;
+      }
+    }
+    if (seen >= 0) {
+      emit[k] = contribution(weight * load3g(lights[seen].color), primary ? 1.0f : 0.0f, ray.pixel);
+      if (writes_aovs)
+        write_aovs(ray.aov_pixel, t_light, (float3)(0.0f), -1, (float3)(0.0f), aov_depth, aov_normal, aov_primid,
+                   aov_albedo);
+      return;
+    }
+  }
 
   if (hit.prim < 0) {
     emit[k] = contribution(weight * background.xyz, 0.0f, ray.pixel);
@@ -62,7 +90,6 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
 
   __global const ObjectGpu* object = &objects[hit.prim];
   __global const MaterialGpu* m = &materials[object->material];
-  float3 o = ray_origin(ray), d = ray_dir(ray);
   float3 n;
   float2 uv;
   object_surface(object, o, d, hit, &n, &uv);
@@ -79,34 +106,42 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   emit[k] = contribution(weight * load3g(m->ambient) * tex * ambient.xyz, primary ? 1.0f : 0.0f, ray.pixel);
   if (writes_aovs) write_aovs(ray.aov_pixel, hit.t, nf, hit.prim, kd, aov_depth, aov_normal, aov_primid, aov_albedo);
 
-  for (int l = 0; l < light_count; ++l) {
-    float3 to_light = load3g(lights[l].position) - p_out;
-    float dist = length(to_light);
-    float3 ldir = to_light / dist;
-    if (dot(nf, ldir) <= 0.0f) continue; /* the light is behind the surface */
-    float3 brought = weight * load3g(lights[l].color) * local_light_term(m, kd, nf, ldir, v);
-    shadows[k * light_count + l] =
-        ray_make(p_out, ldir, 0.0f, dist, brought, ray.pixel, ray.depth, RAY_KIND_SHADOW, ray.sample);
-  }
+  __global SurfaceGpu* s = &surfaces[k];
+  put4(s->p, p_out, ray.time);
+  put4(s->n, nf, 0.0f);
+  put4(s->v, v, 0.0f);
+  put4(s->kd, kd, 0.0f);
+  put4(s->weight, weight, 0.0f);
+  s->material = object->material;
+  s->pixel = ray.pixel;
+  s->sample = ray.sample;
+  s->strata_id = ray.strata_id;
+  s->dim = ray.dim;
+  s->depth = ray.depth;
 
   if (ray.depth >= max_depth) return;
+  int child_dim = dim_children(ray.dim, light_count);
   float k_reflect = m->reflect;
   if (m->transmit > 0.0f) {
     float eta = inside ? m->ior : 1.0f / m->ior;
     float3 t_dir;
     if (refract_dir(i_dir, nf, eta, &t_dir)) {
       float3 w = weight * m->transmit;
-      if (max3(w) >= min_weight)
-        children[2 * k + 1] = ray_make(p - eps * nf, t_dir, 0.0f, PRISM_INF, w, ray.pixel, ray.depth + 1,
-                                       RAY_KIND_REFRACTED, ray.sample);
+      if (max3(w) >= min_weight) {
+        float2 u = ray_sample_2d(seed, strata, ray.strata_id, ray.sample, ray.dim + DIM_TRANSMIT_LOBE, 0, 1);
+        children[2 * k + 1] = ray_child(ray, p - eps * nf, material_transmit_dir(m, t_dir, nf, u), PRISM_INF, w,
+                                        ray.depth + 1, RAY_KIND_REFRACTED, child_dim);
+      }
     } else {
       k_reflect += m->transmit; /* total internal reflection: what would pass is reflected */
     }
   }
   if (k_reflect > 0.0f) {
     float3 w = weight * k_reflect;
-    if (max3(w) >= min_weight)
-      children[2 * k] = ray_make(p_out, reflect_dir(i_dir, nf), 0.0f, PRISM_INF, w, ray.pixel, ray.depth + 1,
-                                 RAY_KIND_REFLECTED, ray.sample);
+    if (max3(w) >= min_weight) {
+      float2 u = ray_sample_2d(seed, strata, ray.strata_id, ray.sample, ray.dim + DIM_REFLECT_LOBE, 0, 1);
+      children[2 * k] = ray_child(ray, p_out, material_reflect_dir(m, i_dir, nf, u), PRISM_INF, w, ray.depth + 1,
+                                  RAY_KIND_REFLECTED, child_dim);
+    }
   }
 }

@@ -1,5 +1,6 @@
 #include "render/gpu_scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace prism {
@@ -102,6 +103,54 @@ MaterialGpu flattenMaterial(const Material& m) {
   g.model = static_cast<int>(m.model);
   g.texture = static_cast<int>(m.texture.kind);
   g.texture_scale = static_cast<float>(m.texture.scale);
+  g.gloss = static_cast<float>(m.gloss);
+  g.translucency = static_cast<float>(m.translucency);
+  return g;
+}
+
+// Two orthogonal vectors of length `radius` spanning the plane of unit normal n.
+void diskAxes(const Vec3& n, double radius, Vec3& a, Vec3& b) {
+  Vec3 helper = std::fabs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  a = normalize(cross(n, helper));
+  b = cross(n, a);
+  a = a * radius;
+  b = b * radius;
+}
+
+LightGpu flattenLight(const Light& l, int spp) {
+  LightGpu g{};
+  g.type = static_cast<int>(l.type);
+  const double pi = 3.14159265358979323846;
+  double area = 0;
+  switch (l.type) {
+    case LightType::Point:
+      put4(g.position, l.position);
+      break;
+    case LightType::Quad:
+      put4(g.position, l.corner);
+      put4(g.edge1, l.edge1);
+      put4(g.edge2, l.edge2);
+      put4(g.normal, normalize(cross(l.edge1, l.edge2)));
+      area = length(cross(l.edge1, l.edge2));
+      break;
+    case LightType::Disk: {
+      put4(g.position, l.center, l.radius);
+      Vec3 n = normalize(l.normal), a, b;
+      diskAxes(n, l.radius, a, b);
+      put4(g.edge1, a);
+      put4(g.edge2, b);
+      put4(g.normal, n);
+      area = pi * l.radius * l.radius;
+      break;
+    }
+    case LightType::Sphere:
+      put4(g.position, l.center, l.radius);
+      area = 4 * pi * l.radius * l.radius;
+      break;
+  }
+  put4(g.color, l.color * l.intensity, area);
+  // A point light needs one feeler; an area light's `samples` are per pixel.
+  g.samples = l.type == LightType::Point ? 1 : std::max(1, (l.samples + spp - 1) / spp);
   return g;
 }
 
@@ -130,12 +179,7 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
       g.objects.push_back(flattenObject(ob));
   }
   for (const Material& m : scene.materials) g.materials.push_back(flattenMaterial(m));
-  for (const Light& l : scene.lights) {
-    LightGpu lg{};
-    put4(lg.position, l.position);
-    put4(lg.color, l.color * l.intensity);
-    g.lights.push_back(lg);
-  }
+  for (const Light& l : scene.lights) g.lights.push_back(flattenLight(l, std::max(1, options.spp)));
   put4(g.ambient, scene.render.ambient);
   put4(g.background, scene.render.background);
   CameraBasis b = cameraBasis(scene.camera, options.width, options.height);
@@ -147,6 +191,17 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   g.camera.height = options.height;
   g.camera.spp = options.spp;
   g.camera.seed = static_cast<int>(static_cast<std::uint32_t>(options.seed ^ (options.seed >> 32)));
+  const Camera& c = scene.camera;
+  g.camera.lens_radius = static_cast<float>(c.aperture);
+  g.camera.focus_distance = static_cast<float>(c.focus_distance > 0 ? c.focus_distance : length(c.look_at - c.position));
+  g.camera.shutter_open = static_cast<float>(c.shutter_open);
+  g.camera.shutter_close = static_cast<float>(c.shutter_close);
+  g.camera.moving = c.moving && c.hasShutterInterval() ? 1 : 0;
+  put4(g.camera.look_at, c.look_at);
+  put4(g.camera.origin_end, c.moving ? c.position_end : c.position);
+  put4(g.camera.look_at_end, c.moving ? c.look_at_end : c.look_at);
+  const double pi = 3.14159265358979323846;
+  put4(g.camera.world_up, c.up, std::tan(c.fov * pi / 360.0));
   return g;
 }
 

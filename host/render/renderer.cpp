@@ -10,6 +10,7 @@
 #include "kernels/shared/contribution_gpu.h"
 #include "kernels/shared/hit_gpu.h"
 #include "kernels/shared/ray_gpu.h"
+#include "kernels/shared/surface_gpu.h"
 
 namespace prism {
 namespace {
@@ -28,17 +29,14 @@ std::string gib(double bytes) {
   return text;
 }
 
-// Whether the camera's primary rays share one origin (a pinhole), so the first-hit
-// pass can find what they hit. Every camera prism has today is one; depth of field
-// and motion blur will not be.
-bool cameraAllowsZBuffer(const Camera&) { return true; }
-
 }  // namespace
 
 Renderer::Renderer(Context& context) : m_context(context) {
   m_generate = context.kernel("generate.cl", "generate");
   m_shade = context.kernel("shade.cl", "shade");
+  m_spawn_shadows = context.kernel("spawn_shadows.cl", "spawn_shadows");
   m_count = context.kernel("count_rays.cl", "count_rays");
+  m_scan = context.kernel("scan_blocks.cl", "scan_blocks");
   m_scatter = context.kernel("scatter_rays.cl", "scatter_rays");
   m_accumulate = context.kernel("accumulate.cl", "accumulate");
   m_supersample = context.kernel("supersample.cl", "supersample");
@@ -51,12 +49,15 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   options.validate();
   auto start = std::chrono::steady_clock::now();
   const SamplingOptions sampling = options.sampling();
-  const bool pinhole = cameraAllowsZBuffer(scene.camera);
+  // The first-hit pass serves rays that leave one point at one instant.
+  const bool pinhole = scene.camera.isPinhole();
   FirstHitMode first_hit = options.first_hit;
   if (first_hit == FirstHitMode::Auto) first_hit = pinhole ? FirstHitMode::ZBuffer : FirstHitMode::Trace;
   if (first_hit == FirstHitMode::ZBuffer && !pinhole)
-    throw std::invalid_argument("first hit zbuffer needs a pinhole camera (no depth of field or motion blur); "
-                                "use first hit trace or auto");
+    throw std::invalid_argument(std::string("first hit zbuffer needs a pinhole camera, but this one has ") +
+                                (scene.camera.aperture > 0 ? "an aperture (depth of field)"
+                                                           : "a shutter interval (motion blur)") +
+                                ": its primary rays do not share one origin and instant; use first hit trace or auto");
 
   GpuScene gpu = flattenScene(scene, options);
   RenderResult result;
@@ -70,6 +71,14 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_stats = &result.stats;
   m_zbuffer = first_hit == FirstHitMode::ZBuffer;
   m_spp = sampling.spp;
+  m_strata = sampling.mode == AaMode::Random ? 0 : sampling.spp;
+  m_group_base = 0;
+  m_shadow_slots = 0;
+  m_area_lights = false;
+  for (const LightGpu& l : gpu.lights) {
+    m_shadow_slots += l.samples;
+    m_area_lights = m_area_lights || l.type != LIGHT_POINT;
+  }
   struct Reset {
     Renderer* r;
     ~Reset() {
@@ -105,7 +114,6 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_aov_primid = Buffer(m_context, pixels * sizeof(std::int32_t));
   m_aov_albedo = Buffer(m_context, pixels * 3 * sizeof(float));
 
-  const size_t light_count = gpu.lights.size();
   m_levels.clear();
   m_levels.emplace_back();  // depth 0 is generated chunk by chunk straight into m_work
   for (int d = 1; d <= options.max_depth; ++d) m_levels.emplace_back(m_context, 2 * kSliceRays * sizeof(RayGpu));
@@ -113,12 +121,17 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_hits.reserve(m_context, kSliceRays * sizeof(HitGpu));
   m_emit.reserve(m_context, kSliceRays * sizeof(ContributionGpu));
   m_children.reserve(m_context, 2 * kSliceRays * sizeof(RayGpu));
-  m_shadows.reserve(m_context, kSliceRays * light_count * sizeof(RayGpu));
-  m_shadow_queue.reserve(m_context, kSliceRays * light_count * sizeof(RayGpu));
-  m_shadow_light.reserve(m_context, kSliceRays * light_count * sizeof(ContributionGpu));
-  size_t max_blocks = (2 * kSliceRays * std::max<size_t>(light_count, 1) + kCompactBlock - 1) / kCompactBlock;
+  m_surfaces.reserve(m_context, kSliceRays * sizeof(SurfaceGpu));
+  if (m_shadow_slots > 0) {
+    const size_t slots = std::min(kShadowSlots, kSliceRays * m_shadow_slots);
+    m_shadows.reserve(m_context, slots * sizeof(RayGpu));
+    m_shadow_queue.reserve(m_context, slots * sizeof(RayGpu));
+    m_shadow_light.reserve(m_context, slots * sizeof(ContributionGpu));
+  }
+  const size_t max_blocks = (std::max(2 * kSliceRays, kShadowSlots) + kCompactBlock - 1) / kCompactBlock;
   m_counts.reserve(m_context, max_blocks * RAY_KIND_COUNT * sizeof(std::int32_t));
   m_offsets.reserve(m_context, max_blocks * sizeof(std::int32_t));
+  m_totals.reserve(m_context, (RAY_KIND_COUNT + 1) * sizeof(std::int32_t));
   m_chunk_xy.reserve(m_context, kSliceRays * 2 * sizeof(float));
   m_chunk_aov.reserve(m_context, kSliceRays * sizeof(std::int32_t));
 
@@ -244,6 +257,7 @@ std::vector<float> Renderer::traceFilmPositions(const std::vector<float>& xy,
       const size_t m = std::min(kSliceRays, count - first);
       m_chunk_xy.write(xy.data() + 2 * (begin + first), m * kPositionBytesPerSample);
       m_chunk_aov.write(aov_pixel.data() + begin + first, m * sizeof(std::int32_t));
+      m_group_base = static_cast<long long>(m_stats->rays_by_kind[RAY_KIND_PRIMARY]) - static_cast<long long>(first);
       traceChunk(static_cast<int>(first), m);
       if (done) done(begin + first + m);
     }
@@ -260,6 +274,8 @@ void Renderer::traceChunk(int first_key, size_t n) {
       .arg(m_chunk_aov)
       .arg(static_cast<cl_int>(first_key))
       .arg(static_cast<cl_int>(m_spp))
+      .arg(static_cast<cl_long>(m_group_base))
+      .arg(static_cast<cl_int>(m_strata))
       .arg(static_cast<cl_int>(n))
       .arg(m_work)
       .run(n);
@@ -304,13 +320,16 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
       .arg(m_materials)
       .arg(m_lights)
       .arg(light_count)
+      .arg(static_cast<cl_int>(m_area_lights ? 1 : 0))
       .arg(ambient)
       .arg(background)
       .arg(opt.max_depth)
       .arg(static_cast<float>(opt.min_weight))
+      .arg(static_cast<cl_uint>(m_scene->camera.seed))
+      .arg(static_cast<cl_int>(m_strata))
       .arg(m_emit)
       .arg(m_children)
-      .arg(m_shadows)
+      .arg(m_surfaces)
       .arg(m_aov_depth)
       .arg(m_aov_normal)
       .arg(m_aov_primid)
@@ -318,37 +337,49 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
       .run(n);
   accumulate(m_emit, n);
 
-  if (light_count > 0) {
-    size_t shadow_count = compact(m_shadows, n * light_count, m_shadow_queue, m_stats->rays_by_kind);
-    if (shadow_count > 0) {
-      KernelLaunch occlude = m_context.launch(m_occlude);
-      occlude.arg(m_shadow_queue).arg(static_cast<int>(shadow_count));
-      m_accel.bind(occlude, m_objects, object_count).arg(m_materials).arg(m_shadow_light).run(shadow_count);
-      accumulate(m_shadow_light, shadow_count);
-    }
-  }
+  if (m_shadow_slots > 0) traceShadows(n);
 
   if (depth >= opt.max_depth) return;
   size_t child_count = compact(m_children, 2 * n, m_levels[depth + 1], m_stats->rays_by_kind);
   if (child_count > 0) traceLevel(depth + 1, child_count);
 }
 
+void Renderer::traceShadows(size_t surfaces) {
+  const int object_count = static_cast<int>(m_scene->objects.size());
+  const int light_count = static_cast<int>(m_scene->lights.size());
+  const size_t per_run = std::max<size_t>(1, kShadowSlots / m_shadow_slots);  // shaded points per run
+  for (size_t first = 0; first < surfaces; first += per_run) {
+    const size_t slots = std::min(per_run, surfaces - first) * m_shadow_slots;
+    m_context.launch(m_spawn_shadows)
+        .arg(m_surfaces)
+        .arg(static_cast<cl_long>(first * m_shadow_slots))
+        .arg(static_cast<cl_int>(slots))
+        .arg(static_cast<cl_int>(m_shadow_slots))
+        .arg(m_materials)
+        .arg(m_lights)
+        .arg(light_count)
+        .arg(static_cast<cl_uint>(m_scene->camera.seed))
+        .arg(static_cast<cl_int>(m_strata))
+        .arg(m_shadows)
+        .run(slots);
+    const size_t live = compact(m_shadows, slots, m_shadow_queue, m_stats->rays_by_kind);
+    if (live == 0) continue;
+    KernelLaunch occlude = m_context.launch(m_occlude);
+    occlude.arg(m_shadow_queue).arg(static_cast<int>(live));
+    m_accel.bind(occlude, m_objects, object_count).arg(m_materials).arg(m_shadow_light).run(live);
+    accumulate(m_shadow_light, live);
+  }
+}
+
 size_t Renderer::compact(const Buffer& in, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds) {
   const int blocks = static_cast<int>((count + kCompactBlock - 1) / kCompactBlock);
   m_context.launch(m_count).arg(in).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_counts).run(blocks);
-  std::vector<std::int32_t> counts(static_cast<size_t>(blocks) * RAY_KIND_COUNT);
-  m_counts.read(counts.data(), counts.size() * sizeof(std::int32_t));
-  std::vector<std::int32_t> offsets(blocks);
-  std::int64_t total = 0;
-  for (int b = 0; b < blocks; ++b) {
-    offsets[b] = static_cast<std::int32_t>(total);
-    for (int k = 0; k < RAY_KIND_COUNT; ++k) {
-      total += counts[b * RAY_KIND_COUNT + k];
-      kinds[k] += counts[b * RAY_KIND_COUNT + k];
-    }
-  }
+  m_context.launch(m_scan).arg(m_counts).arg(blocks).arg(m_offsets).arg(m_totals).run(1);
+  std::int32_t totals[RAY_KIND_COUNT + 1];
+  m_totals.read(totals, sizeof totals);
+  for (int k = 0; k < RAY_KIND_COUNT; ++k) kinds[k] += static_cast<std::uint64_t>(totals[k]);
+  const std::int32_t total = totals[RAY_KIND_COUNT];
   if (total == 0) return 0;
-  m_offsets.write(offsets.data(), offsets.size() * sizeof(std::int32_t));
   m_context.launch(m_scatter).arg(in).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_offsets).arg(out).run(blocks);
   return static_cast<size_t>(total);
 }
@@ -374,8 +405,8 @@ void Renderer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
   // Everything else this render keeps on the device: queues, scene, structure, AOVs.
   std::uint64_t other = pixels * kBytesPerPixel + m_scene->objects.size() * sizeof(ObjectGpu) +
                         m_stats->accel_stats.bytes + m_tile.bytes();
-  for (const Buffer* b : {&m_work, &m_hits, &m_emit, &m_children, &m_shadows, &m_shadow_queue, &m_shadow_light,
-                          &m_counts, &m_offsets, &m_chunk_xy, &m_chunk_aov})
+  for (const Buffer* b : {&m_work, &m_hits, &m_emit, &m_children, &m_surfaces, &m_shadows, &m_shadow_queue,
+                          &m_shadow_light, &m_counts, &m_offsets, &m_chunk_xy, &m_chunk_aov})
     other += b->bytes();
   for (const Buffer& b : m_levels) other += b.bytes();
   if (m_firsthit && m_zbuffer)

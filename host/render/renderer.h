@@ -74,6 +74,10 @@ class Renderer {
   // Rays per wave slice: a fixed constant (not a device property), so chunking,
   // and with it the order of every floating-point sum, is the same on any device.
   static constexpr size_t kSliceRays = 1 << 16;
+  // Shadow-feeler slots spawned, compacted and traced at once: the shaded points
+  // of a slice go in runs of kShadowSlots / (feelers per point), so memory does
+  // not grow with the number of light samples. A constant, like kSliceRays.
+  static constexpr size_t kShadowSlots = 4 * kSliceRays;
 
   // How many slices of adaptive sample positions the device film holds at once
   // (256 by default: 16M positions, 256 MiB); the colours go back to the host
@@ -103,6 +107,9 @@ class Renderer {
   // Stable compaction of `in` (count slots) into `out`; returns the live count
   // and adds the live rays of each kind to `kinds`.
   size_t compact(const Buffer& in, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds);
+  // The shadow feelers of the slice's shaded points in m_surfaces: spawned in
+  // runs, compacted, traced by occlude, their light added into m_film.
+  void traceShadows(size_t surfaces);
   void accumulate(const Buffer& contributions, size_t count);
   // Throws FilmTooLarge unless `samples` per-sample film entries (and their
   // positions when `with_positions`) fit the device beside everything else.
@@ -110,7 +117,8 @@ class Renderer {
   void zeroFill(Buffer& buffer, size_t bytes);
 
   Context& m_context;
-  cl_kernel m_generate, m_extend, m_shade, m_occlude, m_count, m_scatter, m_accumulate, m_supersample, m_resolve;
+  cl_kernel m_generate, m_extend, m_shade, m_spawn_shadows, m_occlude, m_count, m_scan, m_scatter, m_accumulate,
+      m_supersample, m_resolve;
   std::unique_ptr<FirstHitPass> m_firsthit;
 
   // Per-render state.
@@ -119,6 +127,10 @@ class Renderer {
   RenderStats* m_stats = nullptr;
   bool m_zbuffer = false;  // wave 0 from the first-hit pass
   int m_spp = 1;           // samples per pixel of the per-pixel modes (1 otherwise)
+  int m_strata = 1;        // samples that share strata in the sampler (0: independent, aa random)
+  long long m_group_base = 0;  // adaptive: the batch's first position, so strata groups stay distinct
+  int m_shadow_slots = 0;  // shadow feelers per shaded point: the lights' samples summed
+  bool m_area_lights = false;
   size_t m_film_batch_slices = 256;
   AccelBuffers m_accel;
   Buffer m_camera, m_objects, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
@@ -126,7 +138,8 @@ class Renderer {
   Buffer m_sample_xy;  // film positions of all samples (for resolve)
   Buffer m_chunk_xy, m_chunk_aov, m_tile, m_pixels;
   std::vector<Buffer> m_levels;  // queue of each depth >= 1, up to 2 * kSliceRays rays
-  Buffer m_work, m_hits, m_emit, m_children, m_shadows, m_shadow_queue, m_shadow_light, m_counts, m_offsets;
+  Buffer m_work, m_hits, m_emit, m_children, m_surfaces, m_shadows, m_shadow_queue, m_shadow_light, m_counts,
+      m_offsets, m_totals;
 };
 
 }  // namespace prism

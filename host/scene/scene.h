@@ -18,6 +18,20 @@ struct Camera {
   Vec3 look_at{0, 0, 0};
   Vec3 up{0, 1, 0};
   double fov = 45;  // vertical field of view, degrees
+  // Depth of field: the lens radius (0: a pinhole) and the distance of the plane
+  // in focus along the view direction (0: the distance to look_at).
+  double aperture = 0;
+  double focus_distance = 0;
+  // Motion blur: the shutter interval, and where the camera is and looks at
+  // shutter close (moving = false: where it is at open).
+  double shutter_open = 0, shutter_close = 0;
+  bool moving = false;
+  Vec3 position_end, look_at_end;
+
+  bool hasShutterInterval() const { return shutter_close > shutter_open; }
+  // Whether every primary ray leaves one point at one instant, which is what the
+  // first-hit (Z-buffer) pass can serve: no aperture, no shutter interval.
+  bool isPinhole() const { return aperture == 0 && !hasShutterInterval(); }
 };
 
 struct Film {
@@ -43,10 +57,22 @@ struct RenderSettings {
   std::string first_hit = "auto";  // primary visibility: auto, zbuffer or trace
 };
 
+enum class LightType { Point = 0, Quad = 1, Disk = 2, Sphere = 3 };
+
+// A point light (position) or an area light of uniform emitted radiance
+// color * intensity: a quad (corner, edge1, edge2: a parallelogram), a disk
+// (center, normal, radius) or a sphere (center, radius).
 struct Light {
+  LightType type = LightType::Point;
   Vec3 position{0, 10, 0};
   Vec3 color{1, 1, 1};
   double intensity = 1;
+  Vec3 corner, edge1, edge2;
+  Vec3 center, normal{0, -1, 0};
+  double radius = 1;
+  // Shadow feelers per pixel this light wants: a hit sends ceil(samples / spp)
+  // of them, so the pixel's samples together send at least `samples`.
+  int samples = 1;
 };
 
 enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4 };

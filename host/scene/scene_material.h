@@ -27,6 +27,10 @@ struct Material {
   double reflect = 0;     // k_refl: weight of the mirror-reflected ray
   double transmit = 0;    // k_trans: weight of the refracted ray and shadow transmission
   double ior = 1;         // index of refraction of the object's inside
+  // Phong-lobe exponents of the reflected and refracted rays around the ideal
+  // directions (distributed ray tracing); 0: the ideal direction (mirror, clear).
+  double gloss = 0;
+  double translucency = 0;
   Texture texture;        // multiplies ambient and diffuse
   std::string diffuse_map;  // image file a mesh's material names for diffuse (MTL map_Kd), or ""
 };

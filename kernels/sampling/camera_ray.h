@@ -1,6 +1,8 @@
-/* The primary ray direction through a film position (x in [0, W], y in [0, H],
- * pixel (i, j) covering [i, i+1] x [j, j+1], y down): the same arithmetic as
- * kernels/generate.cl, so a sample traced either way meets the same hit. */
+/* Primary rays from film positions (x in [0, W], y in [0, H], pixel (i, j)
+ * covering [i, i+1] x [j, j+1], y down). camera_ray_dir is the pinhole at
+ * shutter open, the arithmetic the first-hit pass shares with generate, so a
+ * sample traced either way meets the same hit; camera_ray adds the time, the
+ * moving camera and the thin lens. */
 #ifndef PRISM_SAMPLING_CAMERA_RAY_H
 #define PRISM_SAMPLING_CAMERA_RAY_H
 
@@ -11,6 +13,56 @@ inline float3 camera_ray_dir(__global const CameraGpu* camera, float fx, float f
   float x = 2.0f * fx / (float)camera->width - 1.0f;
   float y = 1.0f - 2.0f * fy / (float)camera->height;
   return normalize(load3g(camera->forward) + x * load3g(camera->right) + y * load3g(camera->up));
+}
+
+/* A point of the unit disk for u in [0, 1)^2, by Shirley and Chiu's concentric
+ * map (it keeps strata compact). */
+inline float2 concentric_disk(float2 u) {
+  float2 s = 2.0f * u - (float2)(1.0f, 1.0f);
+  if (s.x == 0.0f && s.y == 0.0f) return (float2)(0.0f, 0.0f);
+  float r, theta;
+  if (fabs(s.x) > fabs(s.y)) {
+    r = s.x;
+    theta = 0.785398163f * (s.y / s.x);
+  } else {
+    r = s.y;
+    theta = 1.570796327f - 0.785398163f * (s.x / s.y);
+  }
+  return (float2)(r * cos(theta), r * sin(theta));
+}
+
+/* The ray of film position (fx, fy) for time sample u_time and lens sample
+ * u_lens (both in [0, 1)): origin *o, unit direction *d, instant *time. */
+inline void camera_ray(__global const CameraGpu* camera, float fx, float fy, float u_time, float2 u_lens, float3* o,
+                       float3* d, float* time) {
+  float open = camera->shutter_open, close = camera->shutter_close;
+  *time = close > open ? open + u_time * (close - open) : open;
+  float3 origin = load3g(camera->origin);
+  float3 forward = load3g(camera->forward);
+  float3 right = load3g(camera->right), up = load3g(camera->up);
+  if (camera->moving) {
+    float s = close > open ? (*time - open) / (close - open) : 0.0f;
+    origin = mix(origin, load3g(camera->origin_end), s);
+    float3 look = mix(load3g(camera->look_at), load3g(camera->look_at_end), s);
+    forward = normalize(look - origin);
+    float3 r = normalize(cross(forward, load3g(camera->world_up)));
+    float tan_half = camera->world_up[3];
+    right = r * (tan_half * (float)camera->width / (float)camera->height);
+    up = cross(r, forward) * tan_half;
+  }
+  float x = 2.0f * fx / (float)camera->width - 1.0f;
+  float y = 1.0f - 2.0f * fy / (float)camera->height;
+  float3 dir = normalize(forward + x * right + y * up);
+  if (camera->lens_radius > 0.0f) {
+    /* Every ray through the lens from this film point meets the pinhole ray on
+     * the plane in focus, focus_distance along the view direction. */
+    float3 focus = origin + dir * (camera->focus_distance / dot(dir, forward));
+    float2 l = concentric_disk(u_lens) * camera->lens_radius;
+    origin = origin + l.x * normalize(right) + l.y * normalize(up);
+    dir = normalize(focus - origin);
+  }
+  *o = origin;
+  *d = dir;
 }
 
 #endif

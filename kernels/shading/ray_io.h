@@ -27,6 +27,20 @@ inline RayGpu ray_make(float3 o, float3 d, float tmin, float tmax, float3 w, int
   r.kind = kind;
   r.sample = sample;
   r.aov_pixel = -1;
+  r.time = 0.0f;
+  r.dim = 0;
+  r.strata_id = 0;
+  r.pad = 0;
+  return r;
+}
+
+/* A ray spawned at a parent's hit: the same film key, sample, instant and strata,
+ * its own next sample dimension. */
+inline RayGpu ray_child(RayGpu parent, float3 o, float3 d, float tmax, float3 w, int depth, int kind, int dim) {
+  RayGpu r = ray_make(o, d, 0.0f, tmax, w, parent.pixel, depth, kind, parent.sample);
+  r.time = parent.time;
+  r.dim = dim;
+  r.strata_id = parent.strata_id;
   return r;
 }
 

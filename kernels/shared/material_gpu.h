@@ -21,7 +21,11 @@ typedef struct MaterialGpu {
   int model;      /* SHADING_* */
   int texture;    /* TEXTURE_* */
   float texture_scale;
-  int pad;
+  /* Phong-lobe exponents of the reflected and the refracted ray around their
+   * ideal directions; 0: the ideal direction itself (mirror, clear glass). */
+  float gloss;
+  float translucency;
+  int pad[3];
 } MaterialGpu;
 
 #endif

@@ -24,8 +24,16 @@ typedef struct RayGpu {
   int kind;   /* RAY_KIND_* */
   int sample; /* index of the sample within its pixel (per-pixel modes), else 0 */
   /* Primary rays: the pixel whose AOVs this sample writes, or -1 for none (see
-   * kernels/supersample.cl); -1 for every other ray. Keeps the struct at 64 bytes. */
+   * kernels/supersample.cl); -1 for every other ray. */
   int aov_pixel;
+  /* The stochastic state (kernels/sampling/sampler.h): the instant in the
+   * shutter interval the ray lives at (motion blur), the next unused sample
+   * dimension of its path, and the id of the group of `strata` samples whose
+   * strata it shares (its pixel in the per-pixel modes). */
+  float time;
+  int dim;
+  int strata_id;
+  int pad;
 } RayGpu;
 
 #endif
