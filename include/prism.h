@@ -112,18 +112,28 @@ PRISM_API void prismReleaseScene(PrismScene scene); /* NULL is a no-op */
 PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* count);
 PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, const char** message);
 
-/* The pinhole camera (DESIGN.md: right-handed; pixel (i, j) with i to the right,
- * j down from the top row; one sample goes through the pixel centre). */
+/* The camera (DESIGN.md: right-handed; pixel (i, j) with i to the right, j down
+ * from the top row; one sample goes through the pixel centre). A pinhole unless
+ * it has an aperture (depth of field) or a shutter interval (motion blur; the
+ * camera itself moves when `moving` is nonzero). docs/scene-format.md, "camera". */
 typedef struct PrismCamera {
   size_t struct_size; /* sizeof(PrismCamera); set by prismGetCamera */
   float position[3];
   float look_at[3];
   float up[3];
   float fov_degrees;  /* vertical field of view, 0 < fov < 180 */
+  float aperture;       /* lens radius in scene units; 0: a pinhole */
+  float focus_distance; /* distance of the plane in focus along the view direction; 0: to look_at */
+  float shutter_open, shutter_close; /* the shutter interval; equal: an instant */
+  int moving;           /* nonzero: at shutter close the camera is at position_end looking at look_at_end */
+  float position_end[3];
+  float look_at_end[3];
 } PrismCamera;
 
 /* The scene's camera, to read or change (prismSetCamera checks it: position !=
- * look_at, up not parallel to the view direction, fov in (0, 180)). */
+ * look_at, up not parallel to the view direction, fov in (0, 180), aperture and
+ * focus_distance >= 0, shutter_close >= shutter_open; the same rules and
+ * messages as the scene format's camera). */
 PRISM_API PrismStatus prismGetCamera(PrismScene scene, PrismCamera* camera);
 PRISM_API PrismStatus prismSetCamera(PrismScene scene, const PrismCamera* camera);
 
@@ -142,6 +152,26 @@ PRISM_API PrismStatus prismLoadMeshAsScene(const char* path, PrismScene* out_sce
 /* Adds a point light. */
 PRISM_API PrismStatus prismAddPointLight(PrismScene scene, const float position[3], const float color[3],
                                          float intensity);
+
+typedef enum PrismAreaLightType { PRISM_LIGHT_QUAD = 1, PRISM_LIGHT_DISK = 2, PRISM_LIGHT_SPHERE = 3 } PrismAreaLightType;
+
+/* An area light of uniform emitted radiance color x intensity (docs/scene-format.md,
+ * "lights"): a quad (corner + the parallelogram of edge1 and edge2), a disk
+ * (center, normal, radius) or a sphere (center, radius); fields another type
+ * uses are ignored. `samples`: shadow feelers per pixel it wants (1 to 4096). */
+typedef struct PrismAreaLight {
+  size_t struct_size; /* sizeof(PrismAreaLight) */
+  PrismAreaLightType type;
+  float corner[3], edge1[3], edge2[3];
+  float center[3], normal[3];
+  float radius;
+  float color[3];
+  float intensity;
+  int samples;
+} PrismAreaLight;
+
+/* Adds an area light; the same checks and messages as the scene loader's. */
+PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* light);
 /* Adds a mesh object from a file. `material` names a material of the scene (NULL:
  * the file's own materials); `object_to_world` is a 4x4 row-major affine matrix
  * (NULL: identity); `smooth` nonzero interpolates the file's vertex normals.

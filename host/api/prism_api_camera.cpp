@@ -35,6 +35,13 @@ PRISM_API PrismStatus prismGetCamera(PrismScene scene, PrismCamera* camera) {
   put(camera->look_at, c.look_at);
   put(camera->up, c.up);
   camera->fov_degrees = static_cast<float>(c.fov);
+  camera->aperture = static_cast<float>(c.aperture);
+  camera->focus_distance = static_cast<float>(c.focus_distance);
+  camera->shutter_open = static_cast<float>(c.shutter_open);
+  camera->shutter_close = static_cast<float>(c.shutter_close);
+  camera->moving = c.moving ? 1 : 0;
+  put(camera->position_end, c.moving ? c.position_end : c.position);
+  put(camera->look_at_end, c.moving ? c.look_at_end : c.look_at);
   return PRISM_OK;
 }
 
@@ -47,6 +54,13 @@ PRISM_API PrismStatus prismSetCamera(PrismScene scene, const PrismCamera* camera
   c.look_at = vec(camera->look_at);
   c.up = vec(camera->up);
   c.fov = camera->fov_degrees;
+  c.aperture = camera->aperture;
+  c.focus_distance = camera->focus_distance;
+  c.shutter_open = camera->shutter_open;
+  c.shutter_close = camera->shutter_close;
+  c.moving = camera->moving != 0;
+  c.position_end = vec(camera->position_end);
+  c.look_at_end = vec(camera->look_at_end);
   std::string problem = cameraProblem(c);
   if (!problem.empty()) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismSetCamera: " + problem);
   scene->scene.camera = c;

@@ -122,6 +122,9 @@ Camera (default: the scene's camera):
   --camera-look X,Y,Z  the point it looks at
   --camera-up X,Y,Z    its up direction (not parallel to the view direction)
   --fov DEG            vertical field of view in degrees, 0 < DEG < 180
+  --aperture R         lens radius in scene units: depth of field (0: a pinhole)
+  --focus-distance D   distance of the plane in focus along the view direction
+                       (default: the scene's, else the distance to the look-at point)
 
 Speed:
   --accel A         spatial index for ray queries: bvh (default), octree, bsp, or

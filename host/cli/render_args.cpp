@@ -14,7 +14,8 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--device", "", true},    {"--aov", "", true},       {"--seed", "", true},
     {"--no-cache", "", false}, {"--quiet", "", false},    {"--help", "-h", false},
     {"--accel", "", true},     {"--camera-pos", "", true}, {"--camera-look", "", true},
-    {"--camera-up", "", true}, {"--fov", "", true},
+    {"--camera-up", "", true}, {"--fov", "", true},    {"--aperture", "", true},
+    {"--focus-distance", "", true},
     {"--aa", "", true},        {"--filter", "", true},    {"--aa-threshold", "", true},
     {"--aa-max-level", "", true}, {"--first-hit", "", true},
 };
@@ -157,6 +158,10 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
   request.camera_look = parsed.triple("--camera-look");
   request.camera_up = parsed.triple("--camera-up");
   request.fov = parsed.floatBetween("--fov", 0, 180);
+  request.aperture = parsed.nonNegativeFloat("--aperture");
+  request.focus_distance = parsed.nonNegativeFloat("--focus-distance");
+  if (request.focus_distance && !(*request.focus_distance > 0))
+    throw UsageError("--focus-distance: expected a positive distance, got 0");
   checkOutput(request);
   return request;
 }

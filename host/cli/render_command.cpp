@@ -69,10 +69,12 @@ std::string samplingText(const PrismRenderOptions& options) {
   return text + ", " + (filter ? filter : "?") + " filter";
 }
 
-// --camera-pos/--camera-look/--camera-up/--fov replace the scene's values; the
-// library checks that the result can form an image.
+// --camera-pos/--camera-look/--camera-up/--fov/--aperture/--focus-distance
+// replace the scene's values; the library checks that the result can form an image.
 bool applyCameraOverrides(const RenderRequest& request, PrismScene scene) {
-  if (!request.camera_pos && !request.camera_look && !request.camera_up && !request.fov) return true;
+  if (!request.camera_pos && !request.camera_look && !request.camera_up && !request.fov && !request.aperture &&
+      !request.focus_distance)
+    return true;
   PrismCamera camera{};
   camera.struct_size = sizeof camera;
   if (prismGetCamera(scene, &camera) != PRISM_OK) return false;
@@ -83,6 +85,8 @@ bool applyCameraOverrides(const RenderRequest& request, PrismScene scene) {
   copy(camera.look_at, request.camera_look);
   copy(camera.up, request.camera_up);
   if (request.fov) camera.fov_degrees = *request.fov;
+  if (request.aperture) camera.aperture = *request.aperture;
+  if (request.focus_distance) camera.focus_distance = *request.focus_distance;
   return prismSetCamera(scene, &camera) == PRISM_OK;
 }
 

@@ -15,6 +15,8 @@
 #include "mesh/mesh_cache.h"
 #include "mesh/mesh_error.h"
 #include "render/sampler.h"
+#include "scene/camera_check.h"
+#include "scene/light_check.h"
 #include "scene/mesh_objects.h"
 #include <string>
 #include <utility>
@@ -196,7 +198,9 @@ class SceneParser {
   }
 
   void parseCamera(const Json& v, const std::string& path) {
-    checkObject(v, path, {"position", "look_at", "up", "fov"});
+    checkObject(v, path,
+                {"position", "look_at", "up", "fov", "aperture", "focus_distance", "shutter", "position_end",
+                 "look_at_end"});
     Camera& c = m_scene.camera;
     if (const Json* p = find(v, "position")) c.position = vec3(*p, member(path, "position"));
     if (const Json* p = find(v, "look_at")) c.look_at = vec3(*p, member(path, "look_at"));
@@ -212,6 +216,27 @@ class SceneParser {
     if (c.up == Vec3() || !(length(cross(unitVector(c.up), unitVector(view))) > 1e-9))
       fail(member(path, "up"), "expected a direction not parallel to the view direction " + formatVec(view) +
                                    ", got " + formatVec(c.up));
+    static const Check nonNegative = [](double x) { return x >= 0; };
+    if (const Json* p = find(v, "aperture"))
+      c.aperture = number(*p, member(path, "aperture"), "a lens radius >= 0 (0: a pinhole)", nonNegative);
+    if (const Json* p = find(v, "focus_distance"))
+      c.focus_distance = number(*p, member(path, "focus_distance"), "a positive distance",
+                                [](double x) { return x > 0; });
+    if (const Json* p = find(v, "shutter")) {
+      const std::string at = member(path, "shutter");
+      if (!p->is_array() || p->size() != 2) expected(at, "an array [open, close] of 2 numbers", *p);
+      c.shutter_open = number((*p)[0], element(at, 0));
+      c.shutter_close = number((*p)[1], element(at, 1));
+    }
+    const Json* pe = find(v, "position_end");
+    const Json* le = find(v, "look_at_end");
+    if (pe || le) {
+      c.moving = true;
+      c.position_end = pe ? vec3(*pe, member(path, "position_end")) : c.position;
+      c.look_at_end = le ? vec3(*le, member(path, "look_at_end")) : c.look_at;
+    }
+    const std::string problem = cameraProblem(c);
+    if (!problem.empty()) fail(path, problem);
   }
 
   void parseFilm(const Json& v, const std::string& path) {
@@ -311,7 +336,8 @@ class SceneParser {
   Material parseMaterial(const Json& v, const std::string& path) {
     checkObject(
         v, path,
-        {"model", "ambient", "diffuse", "specular", "shininess", "reflect", "transmit", "ior", "texture"});
+        {"model", "ambient", "diffuse", "specular", "shininess", "reflect", "transmit", "ior", "texture", "gloss",
+         "translucency"});
     static const Check unit = [](double x) { return x >= 0 && x <= 1; };
     Material m = defaultMaterial();
     if (const Json* p = find(v, "model")) {
@@ -336,6 +362,14 @@ class SceneParser {
     if (const Json* p = find(v, "ior"))
       m.ior = number(*p, member(path, "ior"), "a positive number", [](double x) { return x > 0; });
     if (const Json* p = find(v, "texture")) m.texture = parseTexture(*p, member(path, "texture"));
+    // Lobe exponents: 0 is the ideal direction; beyond 1e6 a lobe is narrower
+    // than float directions resolve.
+    static const Check exponent = [](double x) { return x >= 0 && x <= 1e6; };
+    if (const Json* p = find(v, "gloss"))
+      m.gloss = number(*p, member(path, "gloss"), "a number in [0, 1e6] (0: a perfect mirror)", exponent);
+    if (const Json* p = find(v, "translucency"))
+      m.translucency =
+          number(*p, member(path, "translucency"), "a number in [0, 1e6] (0: clear refraction)", exponent);
     return m;
   }
 
@@ -355,20 +389,45 @@ class SceneParser {
 
   void parseLights(const Json& v, const std::string& path) {
     if (!v.is_array()) expected(path, "an array of lights", v);
+    static const Check nonNegative = [](double x) { return x >= 0; };
+    static const Check positive = [](double x) { return x > 0; };
     for (std::size_t i = 0; i < v.size(); ++i) {
       const std::string at = element(path, i);
       const Json& l = v[i];
-      checkObject(l, at, {"type", "position", "color", "intensity"});
-      if (const Json* p = find(l, "type")) {
-        const std::string type = string(*p, member(at, "type"), "a string (point)");
-        if (type != "point") fail(member(at, "type"), "unknown light type '" + type + "' (expected point)");
-      }
+      if (!l.is_object()) expected(at, "an object", l);
       Light light;
-      light.position = vec3(require(l, at, "position"), member(at, "position"));
+      std::string type = "point";
+      if (const Json* p = find(l, "type")) type = string(*p, member(at, "type"), "a string (point, quad, rect, disk, sphere)");
+      if (type == "point") {
+        checkObject(l, at, {"type", "position", "color", "intensity"});
+        light.position = vec3(require(l, at, "position"), member(at, "position"));
+      } else if (type == "quad" || type == "rect") {
+        checkObject(l, at, {"type", "corner", "edge1", "edge2", "color", "intensity", "samples"});
+        light.type = LightType::Quad;
+        light.corner = vec3(require(l, at, "corner"), member(at, "corner"));
+        light.edge1 = nonZeroVec3(require(l, at, "edge1"), member(at, "edge1"));
+        light.edge2 = nonZeroVec3(require(l, at, "edge2"), member(at, "edge2"));
+      } else if (type == "disk") {
+        checkObject(l, at, {"type", "center", "normal", "radius", "color", "intensity", "samples"});
+        light.type = LightType::Disk;
+        light.center = vec3(require(l, at, "center"), member(at, "center"));
+        light.normal = unitVector(nonZeroVec3(require(l, at, "normal"), member(at, "normal")));
+        light.radius = number(require(l, at, "radius"), member(at, "radius"), "a positive number", positive);
+      } else if (type == "sphere") {
+        checkObject(l, at, {"type", "center", "radius", "color", "intensity", "samples"});
+        light.type = LightType::Sphere;
+        light.center = vec3(require(l, at, "center"), member(at, "center"));
+        light.radius = number(require(l, at, "radius"), member(at, "radius"), "a positive number", positive);
+      } else {
+        fail(member(at, "type"), "unknown light type '" + type + "' (expected point, quad, rect, disk, sphere)");
+      }
       if (const Json* p = find(l, "color")) light.color = colour(*p, member(at, "color"));
       if (const Json* p = find(l, "intensity"))
-        light.intensity =
-            number(*p, member(at, "intensity"), "a non-negative number", [](double x) { return x >= 0; });
+        light.intensity = number(*p, member(at, "intensity"), "a non-negative number", nonNegative);
+      if (const Json* p = find(l, "samples"))
+        light.samples = int(integer(*p, member(at, "samples"), 1, kMaxLightSamples));
+      const std::string problem = lightProblem(light);
+      if (!problem.empty()) fail(at, problem);
       m_scene.lights.push_back(light);
     }
   }

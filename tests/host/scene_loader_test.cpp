@@ -247,7 +247,7 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
       // lights
       {R"({"lights": {}})", {"lights: expected an array", "got an object"}},
       {R"({"lights": [{"type": "spot", "position": [0, 0, 0]}]})",
-       {"lights[0].type", "unknown light type 'spot'", "(expected point)"}},
+       {"lights[0].type", "unknown light type 'spot'", "(expected point, quad, rect, disk, sphere)"}},
       {R"({"lights": [{"color": [1, 1, 1]}]})", {"lights[0]: missing required key 'position'"}},
       {R"({"lights": [{"position": [0, 0, 0], "intensity": -1}]})", {"lights[0].intensity", "got -1"}},
       // objects
