@@ -7,6 +7,6 @@ __kernel void extend(__global const RayGpu* rays, int count, ACCEL_PARAMS, __glo
   if (k >= count) return;
   RayGpu r = rays[k];
   HitGpu hit;
-  accel_closest(ACCEL_ARGS, ray_origin(r), ray_dir(r), r.tmin, r.tmax, &hit);
+  accel_closest(ACCEL_ARGS, ray_origin(r), ray_dir(r), r.time, r.tmin, r.tmax, &hit);
   hits[k] = hit;
 }

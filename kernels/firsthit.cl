@@ -9,11 +9,12 @@
 #include "geometry/object.h"
 #include "sampling/camera_ray.h"
 
-inline void firsthit_test(__global const ObjectGpu* objects, int prim, float3 o, float3 d, HitGpu* hit) {
+/* time: the shutter's open, the one instant of the rays this pass serves. */
+inline void firsthit_test(__global const ObjectGpu* objects, int prim, float3 o, float3 d, float time, HitGpu* hit) {
   /* A lower index may also take an equal t: allow t up to the next float. */
   float tmax = prim < hit->prim || hit->prim < 0 ? nextafter(hit->t, PRISM_INF) : hit->t;
   float t, u, v;
-  if (object_intersect(&objects[prim], o, d, 0.0f, tmax, &t, &u, &v)) {
+  if (object_intersect(&objects[prim], o, d, time, 0.0f, tmax, &t, &u, &v)) {
     hit->t = t;
     hit->prim = prim;
     hit->u = u;
@@ -34,6 +35,7 @@ __kernel void firsthit(__global const CameraGpu* camera, __global const ObjectGp
   int tile = ty * tiles_x + tx;
   float3 o = load3g(camera->origin);
   float3 d = camera_ray_dir(camera, x, y);
+  float time = camera->shutter_open;
 
   HitGpu hit;
   hit.t = PRISM_INF;
@@ -42,7 +44,7 @@ __kernel void firsthit(__global const CameraGpu* camera, __global const ObjectGp
   hit.v = 0.0f;
   /* The unbounded candidates first: a near hit among them lets the depth test
    * below skip tile candidates behind it. */
-  for (int n = 0; n < global_count; ++n) firsthit_test(objects, global_prims[n], o, d, &hit);
+  for (int n = 0; n < global_count; ++n) firsthit_test(objects, global_prims[n], o, d, time, &hit);
   /* A hit at t lies at view depth t * cos(angle to the forward axis). */
   float cos_forward = dot(d, load3g(camera->forward));
   for (int n = tile_start[tile]; n < tile_start[tile + 1]; ++n) {
@@ -53,7 +55,7 @@ __kernel void firsthit(__global const CameraGpu* camera, __global const ObjectGp
     /* Nor can a candidate wholly behind the hit found so far (its depth bound is
      * 1e-4 nearer than the hull, far more than float error, so ties still get tested). */
     if (tile_depths[n] > hit.t * cos_forward) continue;
-    firsthit_test(objects, tile_prims[n], o, d, &hit);
+    firsthit_test(objects, tile_prims[n], o, d, time, &hit);
   }
   hits[k] = hit;
 }

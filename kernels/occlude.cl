@@ -9,7 +9,7 @@ __kernel void occlude(__global const RayGpu* rays, int count, ACCEL_PARAMS, __gl
   int k = get_global_id(0);
   if (k >= count) return;
   RayGpu r = rays[k];
-  float carried = accel_transmittance(ACCEL_ARGS, materials, ray_origin(r), ray_dir(r), r.tmin, r.tmax);
+  float carried = accel_transmittance(ACCEL_ARGS, materials, ray_origin(r), ray_dir(r), r.time, r.tmin, r.tmax);
   float3 light = ray_weight(r) * carried;
   ContributionGpu c;
   c.r = light.x;

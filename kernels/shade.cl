@@ -92,7 +92,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   __global const MaterialGpu* m = &materials[object->material];
   float3 n;
   float2 uv;
-  object_surface(object, o, d, hit, &n, &uv);
+  object_surface(object, o, d, ray.time, hit, &n, &uv);
   float3 p = o + hit.t * d;
   float3 i_dir = normalize(d);
   bool inside = dot(n, i_dir) > 0.0f;

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+#include "kernels/shared/motion_gpu.h"
+#include "scene/motion.h"
 
 namespace prism {
 namespace {
@@ -66,6 +70,63 @@ bool invert(const float* m, double out[12]) {
   return true;
 }
 
+DecomposedTransform decomposedEnd(const MotionGpu& m, int end) {
+  const float* t = end ? m.translate1 : m.translate0;
+  const float* q = end ? m.rotate1 : m.rotate0;
+  const float* s = end ? m.stretch1 : m.stretch0;
+  DecomposedTransform d;
+  d.translate = {t[0], t[1], t[2]};
+  double w2 = 1.0 - (double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2]);
+  d.rotate[0] = q[0];
+  d.rotate[1] = q[1];
+  d.rotate[2] = q[2];
+  d.rotate[3] = std::sqrt(std::max(0.0, w2));
+  const double st[3][3] = {{s[0], s[1], s[2]}, {s[1], s[3], s[4]}, {s[2], s[4], s[5]}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) d.stretch[i][j] = st[i][j];
+  return d;
+}
+
+// The world box swept by object-space box [lo, hi] over the whole motion: the
+// boxes at kSteps + 1 instants, each grown by how far any point of the box can
+// move before the next one (translation, stretch and rotation changes bounded
+// separately: |dT| + |dS| |x| + dphi |S x|), so the union covers every instant.
+void sweptBounds(const MotionGpu& motion, const double lo[3], const double hi[3], double wlo[3], double whi[3]) {
+  constexpr int kSteps = 64;
+  const DecomposedTransform a = decomposedEnd(motion, 0), b = decomposedEnd(motion, 1);
+  const double dphi = rotationAngle(a, b) / kSteps;
+  double radius = 0;  // of the object-space box around the origin
+  for (int corner = 0; corner < 8; ++corner) {
+    Vec3 c{(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]};
+    radius = std::max(radius, length(c));
+  }
+  double stretch_norm = 0, stretch_step = 0;  // Frobenius norms bound the operator norms
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double da = a.stretch[i][j], db = b.stretch[i][j];
+      stretch_norm = std::max(stretch_norm, std::max(std::fabs(da), std::fabs(db)));
+      stretch_step += (db - da) * (db - da);
+    }
+  stretch_norm *= 3;  // max entry x 3 bounds the Frobenius norm of a 3x3 matrix
+  stretch_step = std::sqrt(stretch_step) / kSteps;
+  const double move = length(b.translate - a.translate) / kSteps + stretch_step * radius + dphi * stretch_norm * radius;
+  for (int k = 0; k < 3; ++k) {
+    wlo[k] = INFINITY;
+    whi[k] = -INFINITY;
+  }
+  for (int step = 0; step <= kSteps; ++step) {
+    const Transform t = interpolate(a, b, static_cast<double>(step) / kSteps);
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 w = t.applyPoint({(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]});
+      const double wv[3] = {w.x, w.y, w.z};
+      for (int k = 0; k < 3; ++k) {
+        wlo[k] = std::min(wlo[k], wv[k] - move);
+        whi[k] = std::max(whi[k], wv[k] + move);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 float roundDown(double x) {
@@ -83,7 +144,23 @@ float roundUp(double x) {
 bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
   double lo[3], hi[3];
   if (ob.type == OBJECT_PLANE || !localBounds(ob, lo, hi)) return false;
-  if (ob.has_transform) {
+  if (ob.has_transform == OBJECT_MOVING) {
+    MotionGpu motion;
+    std::memcpy(&motion, &ob + (ob.flags >> OBJECT_MOTION_SHIFT), sizeof motion);
+    double wlo[3], whi[3];
+    sweptBounds(motion, lo, hi, wlo, whi);
+    // Pad for the kernels' float transform, as for a static one.
+    double extent = 0, magnitude = 0;
+    for (int a = 0; a < 3; ++a) {
+      extent = std::max(extent, whi[a] - wlo[a]);
+      magnitude = std::max({magnitude, std::fabs(wlo[a]), std::fabs(whi[a])});
+    }
+    const double pad = 1e-5 * (extent + magnitude) + 1e-30;
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = wlo[a] - pad;
+      hi[a] = whi[a] + pad;
+    }
+  } else if (ob.has_transform) {
     // The device maps rays into object space with the float matrix; its inverse
     // in double, padded, bounds the shape that matrix describes.
     double m[12];
@@ -133,6 +210,7 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
   set.bounded.reserve(objects.size());
   set.bounds.reserve(objects.size());
   for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (objects[i].type == OBJECT_MOTION) continue;  // a moving object's record, not a primitive
     Aabb b;
     if (objectBounds(objects[i], &b)) {
       set.bounded.push_back(static_cast<std::int32_t>(i));
@@ -143,6 +221,12 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
     }
   }
   return set;
+}
+
+std::size_t primitiveCount(const std::vector<ObjectGpu>& objects) {
+  std::size_t n = objects.size();
+  while (n > 0 && objects[n - 1].type == OBJECT_MOTION) --n;
+  return n;
 }
 
 }  // namespace prism

@@ -53,6 +53,8 @@ struct CellBox {
 inline CellBox toCell(const Aabb& b) { return {{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}}; }
 
 // World bounds of an object; false when it has none (a plane, or non-finite data).
+// A moving object (has_transform == OBJECT_MOVING) must sit in its scene's object
+// array, its motion record further on in it: its box covers its whole motion.
 bool objectBounds(const ObjectGpu& object, Aabb* bounds);
 
 struct PrimitiveSet {
@@ -63,6 +65,10 @@ struct PrimitiveSet {
 };
 
 PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects);
+
+// The primitives of an object array: the entries before the motion records
+// that close it (kernels/shared/motion_gpu.h), if any.
+std::size_t primitiveCount(const std::vector<ObjectGpu>& objects);
 
 // The nearest float <= x and >= x: outward rounding keeps boxes conservative.
 float roundDown(double x);

@@ -8,6 +8,7 @@
 #include "kernels/shared/hit_gpu.h"
 #include "kernels/shared/light_gpu.h"
 #include "kernels/shared/material_gpu.h"
+#include "kernels/shared/motion_gpu.h"
 #include "kernels/shared/object_gpu.h"
 #include "kernels/shared/ray_gpu.h"
 #include "kernels/shared/surface_gpu.h"
@@ -31,3 +32,5 @@ static_assert(sizeof(CameraGpu) == 176 && offsetof(CameraGpu, width) == 64 && of
               "CameraGpu layout");
 static_assert(sizeof(ContributionGpu) == 32 && offsetof(ContributionGpu, pixel) == 16, "ContributionGpu layout");
 static_assert(sizeof(SurfaceGpu) == 112 && offsetof(SurfaceGpu, material) == 80, "SurfaceGpu layout");
+static_assert(sizeof(MotionGpu) == sizeof(ObjectGpu) && offsetof(MotionGpu, translate1) == 60,
+              "a MotionGpu takes one ObjectGpu slot");

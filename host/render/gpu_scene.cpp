@@ -2,6 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "kernels/shared/motion_gpu.h"
+#include "scene/motion.h"
 
 namespace prism {
 namespace {
@@ -49,10 +56,11 @@ ObjectGpu flattenObject(const Object& ob) {
 
 Vec3 vertexAt(const std::vector<float>& xyz, std::uint32_t i) { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
 
-// One TRIANGLE record per mesh triangle, in file order, already in world space.
-void appendMesh(const Object& ob, std::vector<ObjectGpu>& out) {
+// One TRIANGLE record per mesh triangle, in file order, in world space (in object
+// space when the mesh moves: the kernels transform rays at their time instead).
+void appendMesh(const Object& ob, std::vector<ObjectGpu>& out, bool moving) {
   const TriangleMesh& mesh = *ob.mesh;
-  const bool identity = ob.transform.isIdentity();
+  const bool identity = ob.transform.isIdentity() || moving;
   std::vector<Vec3> world(mesh.vertexCount());
   for (std::size_t v = 0; v < world.size(); ++v) {
     Vec3 p = vertexAt(mesh.positions, static_cast<std::uint32_t>(v));
@@ -87,6 +95,27 @@ void appendMesh(const Object& ob, std::vector<ObjectGpu>& out) {
     g.flags = smooth ? OBJECT_FLAG_VERTEX_NORMALS : 0;
     out.push_back(g);
   }
+}
+
+// The motion record of an object moving from `open` to `close` (object to
+// world) over the camera's shutter.
+MotionGpu flattenMotion(const Transform& open, const Transform& close, const Camera& camera) {
+  MotionGpu g{};
+  g.type = OBJECT_MOTION;
+  g.shutter_open = static_cast<float>(camera.shutter_open);
+  g.shutter_close = static_cast<float>(camera.shutter_close);
+  const DecomposedTransform ends[2] = {decompose(open), decompose(close)};
+  float* translate[2] = {g.translate0, g.translate1};
+  float* rotate[2] = {g.rotate0, g.rotate1};
+  float* stretch[2] = {g.stretch0, g.stretch1};
+  for (int e = 0; e < 2; ++e) {
+    put3(translate[e], ends[e].translate);
+    for (int i = 0; i < 3; ++i) rotate[e][i] = static_cast<float>(ends[e].rotate[i]);
+    const auto& st = ends[e].stretch;
+    const double packed[6] = {st[0][0], st[0][1], st[0][2], st[1][1], st[1][2], st[2][2]};
+    for (int i = 0; i < 6; ++i) stretch[e][i] = static_cast<float>(packed[i]);
+  }
+  return g;
 }
 
 MaterialGpu flattenMaterial(const Material& m) {
@@ -172,12 +201,38 @@ CameraBasis cameraBasis(const Camera& camera, int width, int height) {
 
 GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   GpuScene g;
+  // Objects move only when the shutter is open for a while; each moving one's
+  // primitives point to its motion record, appended after every primitive.
+  const bool shutter = scene.camera.hasShutterInterval();
+  std::vector<MotionGpu> motions;
+  std::vector<std::pair<std::size_t, std::size_t>> moving;  // (primitive, motion record)
   for (const Object& ob : scene.objects) {
+    const bool moves = shutter && ob.moving;
+    const std::size_t first = g.objects.size();
     if (ob.type == ObjectType::Mesh)
-      appendMesh(ob, g.objects);
+      appendMesh(ob, g.objects, moves);
     else
       g.objects.push_back(flattenObject(ob));
+    if (!moves) continue;
+    for (std::size_t i = first; i < g.objects.size(); ++i) moving.emplace_back(i, motions.size());
+    motions.push_back(flattenMotion(ob.transform, ob.transform_end, scene.camera));
   }
+  const std::size_t primitives = g.objects.size();
+  for (const auto& [i, k] : moving) {
+    const std::size_t offset = primitives + k - i;
+    if (offset >= (std::size_t(1) << (31 - OBJECT_MOTION_SHIFT)))
+      throw std::invalid_argument("motion blur: a moving object's primitives must be among the first " +
+                                  std::to_string(1u << (31 - OBJECT_MOTION_SHIFT)) + " of the scene");
+    ObjectGpu& o = g.objects[i];
+    o.has_transform = OBJECT_MOVING;
+    o.flags |= static_cast<int>(offset << OBJECT_MOTION_SHIFT);
+  }
+  for (const MotionGpu& m : motions) {
+    ObjectGpu slot;
+    std::memcpy(&slot, &m, sizeof slot);
+    g.objects.push_back(slot);
+  }
+  g.primitive_count = primitives;
   for (const Material& m : scene.materials) g.materials.push_back(flattenMaterial(m));
   for (const Light& l : scene.lights) g.lights.push_back(flattenLight(l, std::max(1, options.spp)));
   put4(g.ambient, scene.render.ambient);

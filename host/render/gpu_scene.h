@@ -14,7 +14,10 @@
 namespace prism {
 
 struct GpuScene {
+  // Every primitive (the index is its primid), then the motion records of the
+  // moving ones (kernels/shared/motion_gpu.h), which are not primitives.
   std::vector<ObjectGpu> objects;
+  std::size_t primitive_count = 0;
   std::vector<MaterialGpu> materials;
   std::vector<LightGpu> lights;
   CameraGpu camera{};

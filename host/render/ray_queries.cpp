@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "accel/prim_ref.h"
 #include "kernels/shared/contribution_gpu.h"
 #include "render/gpu_scene.h"
 
@@ -83,7 +84,7 @@ std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, d
     auto start = Clock::now();
     KernelLaunch launch = m_context.launch(m_extend);
     launch.arg(ray_buffer).arg(static_cast<int>(n));
-    m_buffers.bind(launch, m_object_buffer, static_cast<int>(m_objects.size())).arg(hit_buffer).run(n);
+    m_buffers.bind(launch, m_object_buffer, static_cast<int>(primitiveCount(m_objects))).arg(hit_buffer).run(n);
     m_context.finish();
     seconds += secondsSince(start);
     hit_buffer.read(hits.data() + first, n * sizeof(HitGpu));
@@ -109,7 +110,7 @@ std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, b
     auto start = Clock::now();
     KernelLaunch launch = m_context.launch(m_occlude);
     launch.arg(ray_buffer).arg(static_cast<int>(n));
-    m_buffers.bind(launch, m_object_buffer, static_cast<int>(m_objects.size()))
+    m_buffers.bind(launch, m_object_buffer, static_cast<int>(primitiveCount(m_objects)))
         .arg(with_materials ? m_material_buffer : no_materials)
         .arg(out)
         .run(n);

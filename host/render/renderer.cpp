@@ -296,7 +296,7 @@ void Renderer::traceLevel(int depth, size_t count) {
 }
 
 void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
-  const int object_count = static_cast<int>(m_scene->objects.size());
+  const int object_count = static_cast<int>(m_scene->primitive_count);
   const int light_count = static_cast<int>(m_scene->lights.size());
   const RenderOptions& opt = *m_options;
   m_stats->rays_per_depth[depth] += n;
@@ -345,7 +345,7 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
 }
 
 void Renderer::traceShadows(size_t surfaces) {
-  const int object_count = static_cast<int>(m_scene->objects.size());
+  const int object_count = static_cast<int>(m_scene->primitive_count);
   const int light_count = static_cast<int>(m_scene->lights.size());
   const size_t per_run = std::max<size_t>(1, kShadowSlots / m_shadow_slots);  // shaded points per run
   for (size_t first = 0; first < surfaces; first += per_run) {

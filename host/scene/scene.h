@@ -80,7 +80,11 @@ enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4 }
 struct Object {
   ObjectType type = ObjectType::Sphere;
   int material = 0;  // index into Scene::materials
-  Transform transform;  // object to world
+  Transform transform;  // object to world (at shutter open, when moving)
+  // Motion blur: the object-to-world transform at shutter close; time
+  // interpolates between the two (scene/motion.h).
+  bool moving = false;
+  Transform transform_end;
   // Sphere: center, radius. Box: box_min, box_max. Plane: point, normal.
   // Triangle: vertices (already in world space when the transform was applied).
   Vec3 center;

@@ -436,10 +436,13 @@ class SceneParser {
     if (!v.is_array()) expected(path, "an array of objects", v);
     for (std::size_t i = 0; i < v.size(); ++i) {
       Object o = parseObject(v[i], element(path, i));
-      if (o.type == ObjectType::Mesh)
-        addMeshObject(m_scene, o.mesh, o.material_override ? o.material : -1, o.transform, o.smooth);
-      else
+      if (o.type == ObjectType::Mesh) {
+        Object& mesh = addMeshObject(m_scene, o.mesh, o.material_override ? o.material : -1, o.transform, o.smooth);
+        mesh.moving = o.moving;
+        mesh.transform_end = o.transform_end;
+      } else {
         m_scene.objects.push_back(std::move(o));
+      }
     }
   }
 
@@ -450,13 +453,13 @@ class SceneParser {
         string(require(v, path, "type"), typePath, "a string (sphere, box, plane, triangle, mesh)");
     Object o;
     if (type == "sphere") {
-      checkObject(v, path, {"type", "material", "transform", "center", "radius"});
+      checkObject(v, path, {"type", "material", "transform", "transform_end", "center", "radius"});
       o.type = ObjectType::Sphere;
       o.center = vec3(require(v, path, "center"), member(path, "center"));
       o.radius = number(require(v, path, "radius"), member(path, "radius"), "a positive number",
                         [](double x) { return x > 0; });
     } else if (type == "box") {
-      checkObject(v, path, {"type", "material", "transform", "min", "max"});
+      checkObject(v, path, {"type", "material", "transform", "transform_end", "min", "max"});
       o.type = ObjectType::Box;
       o.box_min = vec3(require(v, path, "min"), member(path, "min"));
       o.box_max = vec3(require(v, path, "max"), member(path, "max"));
@@ -464,16 +467,16 @@ class SceneParser {
         fail(member(path, "max"), "expected max > min on every axis, got max " + formatVec(o.box_max) +
                                       " and min " + formatVec(o.box_min));
     } else if (type == "plane") {
-      checkObject(v, path, {"type", "material", "transform", "point", "normal"});
+      checkObject(v, path, {"type", "material", "transform", "transform_end", "point", "normal"});
       o.type = ObjectType::Plane;
       o.point = vec3(require(v, path, "point"), member(path, "point"));
       o.normal = unitVector(nonZeroVec3(require(v, path, "normal"), member(path, "normal")));
     } else if (type == "triangle") {
-      checkObject(v, path, {"type", "material", "transform", "vertices"});
+      checkObject(v, path, {"type", "material", "transform", "transform_end", "vertices"});
       o.type = ObjectType::Triangle;
       parseVertices(require(v, path, "vertices"), member(path, "vertices"), o.vertices);
     } else if (type == "mesh") {
-      checkObject(v, path, {"type", "material", "transform", "file", "smooth"});
+      checkObject(v, path, {"type", "material", "transform", "transform_end", "file", "smooth"});
       o.type = ObjectType::Mesh;
       parseMesh(v, path, o);
     } else {
@@ -484,6 +487,10 @@ class SceneParser {
       o.material_override = true;
     }
     if (const Json* p = find(v, "transform")) o.transform = parseTransform(*p, member(path, "transform"));
+    if (const Json* p = find(v, "transform_end")) {
+      o.moving = true;
+      o.transform_end = parseTransform(*p, member(path, "transform_end"));
+    }
     bakeTransform(o);
     return o;
   }
@@ -523,7 +530,7 @@ class SceneParser {
   // Triangles and planes are stored in world space: the renderer has no
   // object-space path for them.
   static void bakeTransform(Object& o) {
-    if (o.transform.isIdentity()) return;
+    if (o.transform.isIdentity() || o.moving) return;  // a moving object keeps object space
     if (o.type == ObjectType::Triangle) {
       for (Vec3& p : o.vertices) p = o.transform.applyPoint(p);
     } else if (o.type == ObjectType::Plane) {

@@ -1,8 +1,10 @@
 /* The interface every acceleration structure implements for the extend and
  * occlude kernels. Each structure's header provides
- *   bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit);
+ *   bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit);
  *   float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials,
- *                             float3 o, float3 d, float tmin, float tmax);
+ *                             float3 o, float3 d, float time, float tmin, float tmax);
+ * (time: the ray's instant, at which moving objects are tested; their boxes in
+ * every structure cover their whole motion)
  * (transmittance multiplies k_trans once per primitive the segment meets; an
  * opaque one gives 0; materials == NULL treats every primitive as opaque, a plain
  * occlusion query). The program is built with -DPRISM_ACCEL_<NAME>

@@ -90,14 +90,14 @@ PRISM_HOT bool bsp_next_leaf(__global const BspNodeGpu* nodes, const float* org,
   }
 }
 
-PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
+PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
-  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, tmin, &best, hit);
+  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
   float3 inv = accel_safe_rcp(d);
   BspWalk w;
   if (!bsp_walk_start(&w, accel_nodes, o, inv, tmin, best)) return hit->prim >= 0;
-  PacketRay pr = packet_ray(o, d);
+  PacketRay pr = packet_ray(o, d, time);
   __global const BspNodeGpu* nodes = (__global const BspNodeGpu*)(accel_nodes + 2);
   CellLeaf leaf;
   float org[3] = {o.x, o.y, o.z}, rcp[3] = {inv.x, inv.y, inv.z};
@@ -106,14 +106,14 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   return hit->prim >= 0;
 }
 
-PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
-                                    float tmax) {
-  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
+                                    float tmin, float tmax) {
+  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   float3 inv = accel_safe_rcp(d);
   BspWalk w;
   if (!bsp_walk_start(&w, accel_nodes, o, inv, tmin, tmax)) return carried;
-  PacketRay pr = packet_ray(o, d);
+  PacketRay pr = packet_ray(o, d, time);
   Mailbox mailbox;
   mailbox_init(&mailbox);
   __global const BspNodeGpu* nodes = (__global const BspNodeGpu*)(accel_nodes + 2);

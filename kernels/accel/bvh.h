@@ -57,12 +57,12 @@ PRISM_HOT void bvh_leaf_range(int code, int* start, int* count) {
   *count = (x & (BVH_LEAF_MAX_PACKETS - 1)) + 1;
 }
 
-PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
+PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
-  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, tmin, &best, hit);
+  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
   BvhRay r = bvh_ray(o, d);
-  PacketRay pr = packet_ray(o, d);
+  PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack_code[PRISM_ACCEL_STACK];
   float stack_t[PRISM_ACCEL_STACK];
@@ -115,12 +115,12 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
   return hit->prim >= 0;
 }
 
-PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
-                                    float tmax) {
-  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
+                                    float tmin, float tmax) {
+  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   BvhRay r = bvh_ray(o, d);
-  PacketRay pr = packet_ray(o, d);
+  PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack[PRISM_ACCEL_STACK];
   int sp = 0;

@@ -42,10 +42,12 @@ PRISM_HOT int accel_ctz(int x) { return 31 - clz(x & -x); }
 
 typedef struct PacketRay {
   float4 ox, oy, oz, dx, dy, dz;
+  float time; /* for moving objects, which are tested one by one */
 } PacketRay;
 
-PRISM_HOT PacketRay packet_ray(float3 o, float3 d) {
+PRISM_HOT PacketRay packet_ray(float3 o, float3 d, float time) {
   PacketRay r;
+  r.time = time;
   r.ox = (float4)(o.x);
   r.oy = (float4)(o.y);
   r.oz = (float4)(o.z);
@@ -121,7 +123,7 @@ PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* 
       if (id < 0) continue;
       float tt, uu, vv;
       /* nextafter: an exact tie must reach accel_accept */
-      if (object_intersect(&objects[id], o, d, tmin, nextafter(*best, PRISM_INF), &tt, &uu, &vv))
+      if (object_intersect(&objects[id], o, d, r->time, tmin, nextafter(*best, PRISM_INF), &tt, &uu, &vv))
         accel_accept(tt, uu, vv, id, best, hit);
     }
   }
@@ -197,7 +199,7 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
       int id = -pk->prim[k] - 2;
       if (id < 0) continue;
       float tt, uu, vv;
-      if (object_intersect(&objects[id], o, d, tmin, tmax, &tt, &uu, &vv)) {
+      if (object_intersect(&objects[id], o, d, r->time, tmin, tmax, &tt, &uu, &vv)) {
         carried = accel_count_hit(carried, id, mailbox, objects, materials);
         if (carried == 0.0f) return 0.0f;
       }
@@ -208,23 +210,23 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
 
 /* Planes and other unbounded primitives: tested by every ray. */
 PRISM_HOT void unbounded_closest(__global const ObjectGpu* objects, __global const int* list, int count, float3 o,
-                                 float3 d, float tmin, float* best, HitGpu* hit) {
+                                 float3 d, float time, float tmin, float* best, HitGpu* hit) {
   for (int i = 0; i < count; ++i) {
     int id = list[i];
     float t, u, v;
-    if (object_intersect(&objects[id], o, d, tmin, nextafter(*best, PRISM_INF), &t, &u, &v))
+    if (object_intersect(&objects[id], o, d, time, tmin, nextafter(*best, PRISM_INF), &t, &u, &v))
       accel_accept(t, u, v, id, best, hit);
   }
 }
 
 PRISM_HOT float unbounded_transmittance(__global const ObjectGpu* objects, __global const MaterialGpu* materials,
-                                        __global const int* list, int count, float3 o, float3 d, float tmin,
-                                        float tmax) {
+                                        __global const int* list, int count, float3 o, float3 d, float time,
+                                        float tmin, float tmax) {
   float carried = 1.0f;
   for (int i = 0; i < count && carried > 0.0f; ++i) {
     int id = list[i];
     float t, u, v;
-    if (object_intersect(&objects[id], o, d, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, objects, id);
+    if (object_intersect(&objects[id], o, d, time, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, objects, id);
   }
   return carried;
 }

@@ -5,12 +5,12 @@
 
 #include "accel/leaf_packets.h"
 
-PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
+PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
   for (int i = 0; i < object_count; ++i) {
     float t, u, v;
-    if (object_intersect(&objects[i], o, d, tmin, best, &t, &u, &v)) {
+    if (object_intersect(&objects[i], o, d, time, tmin, best, &t, &u, &v)) {
       best = t;
       hit->t = t;
       hit->prim = i;
@@ -23,12 +23,12 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
 
 /* Fraction of light a shadow feeler carries from tmin to tmax: an opaque object
  * blocks it, each semitransparent object it meets multiplies it by k_trans once. */
-PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
-                                    float tmax) {
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
+                                    float tmin, float tmax) {
   float carried = 1.0f;
   for (int i = 0; i < object_count && carried > 0.0f; ++i) {
     float t, u, v;
-    if (object_intersect(&objects[i], o, d, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, objects, i);
+    if (object_intersect(&objects[i], o, d, time, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, objects, i);
   }
   return carried;
 }

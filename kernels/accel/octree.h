@@ -132,12 +132,12 @@ PRISM_HOT bool octree_next_leaf(__global const OctreeNodeGpu* nodes, float3 o, f
   }
 }
 
-PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float tmax, HitGpu* hit) {
+PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
-  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, tmin, &best, hit);
+  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
   float3 inv = accel_safe_rcp(d);
-  PacketRay pr = packet_ray(o, d);
+  PacketRay pr = packet_ray(o, d, time);
   __global const OctreeNodeGpu* nodes = (__global const OctreeNodeGpu*)(accel_nodes + 2);
   OctreeWalk w;
   octree_walk_start(&w);
@@ -150,12 +150,12 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float tmin, float
 /* Shadow rays walk the cells in any order (every stored octant pushed, the
  * content boxes dropping the ones missed: cheaper than ordering them); the
  * mailbox counts each primitive once whatever the order. */
-PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float tmin,
-                                    float tmax) {
-  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, tmin, tmax);
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
+                                    float tmin, float tmax) {
+  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   float3 inv = accel_safe_rcp(d);
-  PacketRay pr = packet_ray(o, d);
+  PacketRay pr = packet_ray(o, d, time);
   __global const OctreeNodeGpu* nodes = (__global const OctreeNodeGpu*)(accel_nodes + 2);
   Mailbox mailbox;
   mailbox_init(&mailbox);

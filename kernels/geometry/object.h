@@ -7,31 +7,42 @@
 
 #include "common/math.h"
 #include "geometry/box.h"
+#include "geometry/motion.h"
 #include "geometry/plane.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "shared/hit_gpu.h"
 #include "shared/object_gpu.h"
 
-inline float3 xform_vector(__global const float* m, float3 v) {
+inline float3 xform_vector(const float* m, float3 v) {
   return (float3)(m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
                   m[8] * v.x + m[9] * v.y + m[10] * v.z);
 }
-inline float3 xform_point(__global const float* m, float3 p) {
-  return xform_vector(m, p) + (float3)(m[3], m[7], m[11]);
-}
+inline float3 xform_point(const float* m, float3 p) { return xform_vector(m, p) + (float3)(m[3], m[7], m[11]); }
 /* Object-space normal to world space: the transpose of the world-to-object
  * linear part is the inverse transpose of object-to-world. */
-inline float3 xform_normal(__global const float* m, float3 n) {
+inline float3 xform_normal(const float* m, float3 n) {
   return (float3)(m[0] * n.x + m[4] * n.y + m[8] * n.z, m[1] * n.x + m[5] * n.y + m[9] * n.z,
                   m[2] * n.x + m[6] * n.y + m[10] * n.z);
 }
 
-inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, float tmin, float tmax, float* t,
-                             float* u, float* v) {
+/* The world-to-object matrix of a transformed object at `time`, into m. */
+inline void object_world_to_object(__global const ObjectGpu* ob, float time, float* m) {
+  if (ob->has_transform == OBJECT_MOVING) {
+    motion_world_to_object((__global const MotionGpu*)(ob + (ob->flags >> OBJECT_MOTION_SHIFT)), time, m);
+  } else {
+    for (int i = 0; i < 12; ++i) m[i] = ob->world_to_object[i];
+  }
+}
+
+/* The ray (o, d) at `time` against one object; t is the ray's own parameter. */
+inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, float time, float tmin, float tmax,
+                             float* t, float* u, float* v) {
   if (ob->has_transform) {
-    o = xform_point(ob->world_to_object, o);
-    d = xform_vector(ob->world_to_object, d);
+    float m[12];
+    object_world_to_object(ob, time, m);
+    o = xform_point(m, o);
+    d = xform_vector(m, d);
   }
   __global const float* p = ob->p;
   *u = 0.0f;
@@ -51,11 +62,13 @@ inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, f
 
 /* Geometric unit normal (outward for closed objects) and texture coordinates at
  * the hit of ray (o, d). */
-inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, HitGpu hit, float3* normal,
-                           float2* uv) {
+inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, float time, HitGpu hit,
+                           float3* normal, float2* uv) {
+  float m[12];
   if (ob->has_transform) {
-    o = xform_point(ob->world_to_object, o);
-    d = xform_vector(ob->world_to_object, d);
+    object_world_to_object(ob, time, m);
+    o = xform_point(m, o);
+    d = xform_vector(m, d);
   }
   float3 p = o + hit.t * d;
   __global const float* q = ob->p;
@@ -86,7 +99,7 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, Hit
       }
       break;
   }
-  *normal = ob->has_transform ? normalize(xform_normal(ob->world_to_object, n)) : n;
+  *normal = ob->has_transform ? normalize(xform_normal(m, n)) : n;
 }
 
 #endif

@@ -12,11 +12,19 @@
  * space and need none). */
 #define OBJECT_FLAG_VERTEX_NORMALS 1
 
+/* has_transform values. A moving object keeps its geometry (and vertex normals)
+ * in object space; its world-to-object matrix is made per ray, at the ray's
+ * time, from the motion record `flags >> OBJECT_MOTION_SHIFT` entries further on
+ * in the same array (kernels/shared/motion_gpu.h). */
+#define OBJECT_STATIC 1
+#define OBJECT_MOVING 2
+#define OBJECT_MOTION_SHIFT 8
+
 typedef struct ObjectGpu {
   int type;     /* OBJECT_* */
   int material; /* index into the material array */
-  int has_transform; /* nonzero: intersect in object space through `world_to_object` */
-  int flags;    /* OBJECT_FLAG_*; also aligns the float arrays to 16 bytes */
+  int has_transform; /* 0: none; OBJECT_STATIC: intersect in object space through `world_to_object`; OBJECT_MOVING */
+  int flags;    /* OBJECT_FLAG_* and, when moving, the motion record's offset; aligns the arrays */
   /* sphere: center xyz, radius; box: min xyz, max xyz; plane: point xyz, normal xyz;
    * triangle: v0 xyz, v1 xyz, v2 xyz (world space). */
   float p[12];
