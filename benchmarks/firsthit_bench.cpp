@@ -243,8 +243,10 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
         .arg(camera)
         .arg(xy_buffer)
         .arg(aov)
-        .arg(static_cast<cl_int>(0))
-        .arg(static_cast<cl_int>(1))
+        .arg(static_cast<cl_int>(0))   // first key
+        .arg(static_cast<cl_int>(1))   // spp
+        .arg(static_cast<cl_long>(0))  // strata group base
+        .arg(static_cast<cl_int>(1))   // strata
         .arg(static_cast<cl_int>(count))
         .arg(rays)
         .run(count);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "accel_bench.h"
+#include "distributed_bench.h"  // prism-bench distributed: parses its own options
 #include "firsthit_bench.h"  // prism-bench firsthit: parses its own options
 
 namespace {
@@ -18,6 +19,7 @@ namespace {
 const char* kUsage =
     "usage: prism-bench accel [options] [FILES...]\n"
     "       prism-bench firsthit [options] [FILES...]   (see prism-bench firsthit --help)\n"
+    "       prism-bench distributed [options]          (see prism-bench distributed --help)\n"
     "\n"
     "Builds each acceleration structure over each scene and traces the same rays\n"
     "through it and through Intel Embree (rtcIntersect1, as many threads as the\n"
@@ -75,7 +77,8 @@ int main(int argc, char** argv) {
     return args.empty() ? 2 : 0;
   }
   if (args[0] == "firsthit") return prism::bench::firstHitMain(args);
-  if (args[0] != "accel") usageError("unknown command '" + args[0] + "' (expected accel or firsthit)");
+  if (args[0] == "distributed") return prism::bench::distributedMain(args);
+  if (args[0] != "accel") usageError("unknown command '" + args[0] + "' (expected accel, firsthit or distributed)");
   prism::bench::AccelBenchOptions options;
   options.data_dir = PRISM_SOURCE_DIR "/../shared/data/meshes";
   options.command = "prism-bench";

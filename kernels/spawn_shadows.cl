@@ -34,6 +34,8 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
   float3 ldir, scale;
   float dist;
   if (!light_sample(light, p_out, u, &ldir, &dist, &scale)) return;
+  /* Each of a hit's feelers to one light estimates the whole light. */
+  if (light->samples > 1) scale = scale / (float)light->samples;
   if (dot(nf, ldir) <= 0.0f) return; /* the light is behind the surface */
   __global const MaterialGpu* m = &materials[s->material];
   float3 brought = load3g(s->weight) * scale * local_light_term(m, load3g(s->kd), nf, ldir, load3g(s->v));
