@@ -424,7 +424,7 @@ class SceneParser {
       if (const Json* p = find(l, "color")) light.color = colour(*p, member(at, "color"));
       if (const Json* p = find(l, "intensity"))
         light.intensity = number(*p, member(at, "intensity"), "a non-negative number", nonNegative);
-      if (const Json* p = find(l, "samples"))
+      if (const Json* p = find(l, "samples"); p && light.type != LightType::Point)  // a point needs one
         light.samples = int(integer(*p, member(at, "samples"), 1, kMaxLightSamples));
       const std::string problem = lightProblem(light);
       if (!problem.empty()) fail(at, problem);
