@@ -15,6 +15,7 @@ static_assert(sizeof(TriPacketGpu) == 160 && offsetof(TriPacketGpu, e1x) == 48 &
 static_assert(sizeof(BvhNodeGpu) == 224 && offsetof(BvhNodeGpu, hi_x) == 32 && offsetof(BvhNodeGpu, lo_y) == 64 &&
                   offsetof(BvhNodeGpu, lo_z) == 128 && offsetof(BvhNodeGpu, child) == 192,
               "BvhNodeGpu: seven float8");
+static_assert(sizeof(BvhMotionBoundsGpu) == 192, "BvhMotionBoundsGpu: six float8");
 static_assert(sizeof(OctreeNodeGpu) == 48 && offsetof(OctreeNodeGpu, first) == 12 &&
                   offsetof(OctreeNodeGpu, child_mask) == 28 && offsetof(OctreeNodeGpu, cx) == 32 &&
                   offsetof(OctreeNodeGpu, packet_count) == 44,

@@ -84,6 +84,10 @@ struct AccelBuildOptions {
   double bsp_traversal_cost = 1.0;
   double bsp_intersection_cost = 0.15;
   double bsp_empty_bonus = 0.8;
+  // BVH over moving primitives: nodes keep linear bounds (boxes at shutter open
+  // and close, interpolated per ray); false keeps only the swept boxes, which
+  // prism-bench distributed compares against.
+  bool bvh_linear_bounds = true;
 };
 
 // Builds `kind` over `objects` (the flattened scene, one entry per primitive;

@@ -8,6 +8,7 @@
 // children's area-weighted costs. Leaves hold at most kMaxLeafPrims.
 #include <algorithm>
 #include <atomic>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 
@@ -29,7 +30,7 @@ struct PrimRef {
   float lo[3];
   std::int32_t id;
   float hi[3];
-  std::int32_t pad;
+  std::int32_t index;  // into the PrimitiveSet's arrays
   float centroid(int a) const { return lo[a] + hi[a]; }  // twice the centre: only order matters
 };
 
@@ -174,11 +175,61 @@ class Bvh2Builder {
 };
 
 // Collapses the binary tree into 8-wide nodes and writes the leaves' packets.
+// Linear bounds of each binary node (motion blur): its boxes at shutter open
+// and close, the unions of its primitives' (prim_ref.h, objectLinearBounds).
+struct MotionBoxes {
+  std::vector<Aabb> open, close;
+};
+
+// The primitives' linear bounds, in PrimitiveSet order.
+MotionBoxes primitiveMotionBoxes(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims) {
+  MotionBoxes m;
+  m.open.resize(prims.bounded.size());
+  m.close.resize(prims.bounded.size());
+  for (std::size_t i = 0; i < prims.bounded.size(); ++i)
+    if (!objectLinearBounds(objects[prims.bounded[i]], &m.open[i], &m.close[i])) m.open[i] = m.close[i] = prims.bounds[i];
+  return m;
+}
+
+// The nodes' linear bounds from the primitives' (`prim`, PrimitiveSet order).
+MotionBoxes nodeMotionBoxes(const MotionBoxes& prim, const std::vector<Node2>& nodes, const std::vector<PrimRef>& refs) {
+  const std::vector<Aabb>& prim_open = prim.open;
+  const std::vector<Aabb>& prim_close = prim.close;
+  MotionBoxes m;
+  m.open.resize(nodes.size());
+  m.close.resize(nodes.size());
+  // Depth first from the root: children before their parent's union.
+  std::vector<std::pair<int, bool>> todo{{0, false}};
+  while (!todo.empty()) {
+    auto [node, children_done] = todo.back();
+    todo.pop_back();
+    const Node2& n = nodes[node];
+    if (n.left < 0) {
+      for (int i = 0; i < n.count; ++i) {
+        m.open[node].extend(prim_open[refs[n.first + i].index]);
+        m.close[node].extend(prim_close[refs[n.first + i].index]);
+      }
+    } else if (!children_done) {
+      todo.push_back({node, true});
+      todo.push_back({n.left, false});
+      todo.push_back({n.right, false});
+    } else {
+      for (int c : {n.left, n.right}) {
+        m.open[node].extend(m.open[c]);
+        m.close[node].extend(m.close[c]);
+      }
+    }
+  }
+  return m;
+}
+
 class WideFlattener {
  public:
+  // `motion`: the nodes' linear bounds, for a tree over moving primitives (nodes
+  // then carry their children's boxes at shutter open and at close); else null.
   WideFlattener(const std::vector<ObjectGpu>& objects, const std::vector<Node2>& nodes,
-                const std::vector<PrimRef>& refs, DeviceAccel& out)
-      : m_objects(objects), m_nodes(nodes), m_refs(refs), m_out(out) {
+                const std::vector<PrimRef>& refs, const MotionBoxes* motion, DeviceAccel& out)
+      : m_objects(objects), m_nodes(nodes), m_refs(refs), m_motion(motion), m_out(out) {
     m_ids.reserve(kMaxLeafPrims);
   }
 
@@ -186,10 +237,10 @@ class WideFlattener {
     m_root_area = root_area > 0 ? root_area : 1;
     m_wide.reserve(m_nodes.size() / 4 + 1);
     if (m_refs.empty()) {
-      m_wide.push_back(emptyNode());
+      pushNode();
     } else if (m_nodes[0].left < 0) {
       // A single leaf: a root with one child.
-      m_wide.push_back(emptyNode());
+      pushNode();
       setChild(0, 0, 0);
       m_stats.max_depth = 1;
       m_max_stack = 1;
@@ -202,10 +253,40 @@ class WideFlattener {
     s.sah_cost = m_sah;
     s.max_depth = m_stats.max_depth;
     m_out.kernel_options = "-DPRISM_ACCEL_BVH " + stackOption(m_max_stack + 1);
-    appendNodeWords(m_out.nodes, m_wide.data(), m_wide.size());
+    if (!m_motion) {
+      appendNodeWords(m_out.nodes, m_wide.data(), m_wide.size());
+      return;
+    }
+    m_out.kernel_options += " -DPRISM_BVH_MOTION";
+    for (std::size_t i = 0; i < m_wide.size(); ++i) {
+      appendNodeWords(m_out.nodes, &m_wide[i], 1);
+      appendNodeWords(m_out.nodes, &m_close[i], 1);
+    }
   }
 
  private:
+  // An empty slot of a motion node is inverted by +-FLT_MAX, not +-inf: the
+  // kernel's lerp of inf and inf would be NaN, which fmin/fmax then ignore.
+  static BvhMotionBoundsGpu emptyBounds() {
+    BvhMotionBoundsGpu b{};
+    for (int i = 0; i < BVH_WIDTH; ++i) {
+      b.lo_x[i] = b.lo_y[i] = b.lo_z[i] = FLT_MAX;
+      b.hi_x[i] = b.hi_y[i] = b.hi_z[i] = -FLT_MAX;
+    }
+    return b;
+  }
+
+  void pushNode() {
+    m_wide.push_back(emptyNode());
+    if (!m_motion) return;
+    BvhNodeGpu& n = m_wide.back();
+    for (int i = 0; i < BVH_WIDTH; ++i) {
+      n.lo_x[i] = n.lo_y[i] = n.lo_z[i] = FLT_MAX;
+      n.hi_x[i] = n.hi_y[i] = n.hi_z[i] = -FLT_MAX;
+    }
+    m_close.push_back(emptyBounds());
+  }
+
   static BvhNodeGpu emptyNode() {
     BvhNodeGpu n{};
     for (int i = 0; i < BVH_WIDTH; ++i) {
@@ -234,13 +315,24 @@ class WideFlattener {
       code = flatten(node2, depth, stack);
     }
     BvhNodeGpu& n = m_wide[wide];
-    n.lo_x[slot] = c.box.lo[0];
-    n.lo_y[slot] = c.box.lo[1];
-    n.lo_z[slot] = c.box.lo[2];
-    n.hi_x[slot] = c.box.hi[0];
-    n.hi_y[slot] = c.box.hi[1];
-    n.hi_z[slot] = c.box.hi[2];
+    const Aabb& open = m_motion ? m_motion->open[node2] : c.box;
+    n.lo_x[slot] = open.lo[0];
+    n.lo_y[slot] = open.lo[1];
+    n.lo_z[slot] = open.lo[2];
+    n.hi_x[slot] = open.hi[0];
+    n.hi_y[slot] = open.hi[1];
+    n.hi_z[slot] = open.hi[2];
     n.child[slot] = code;
+    if (m_motion) {
+      const Aabb& close = m_motion->close[node2];
+      BvhMotionBoundsGpu& b = m_close[wide];
+      b.lo_x[slot] = close.lo[0];
+      b.lo_y[slot] = close.lo[1];
+      b.lo_z[slot] = close.lo[2];
+      b.hi_x[slot] = close.hi[0];
+      b.hi_y[slot] = close.hi[1];
+      b.hi_z[slot] = close.hi[2];
+    }
   }
 
   int flatten(int node2, int depth, int stack) {
@@ -262,7 +354,7 @@ class WideFlattener {
       kids[count++] = open.right;
     }
     const int index = static_cast<int>(m_wide.size());
-    m_wide.push_back(emptyNode());
+    pushNode();
     m_sah += m_nodes[node2].box.area() / m_root_area;
     // The traversal keeps at most count - 1 siblings on the stack per level.
     for (int i = 0; i < count; ++i) setChild(index, i, kids[i], depth + 1, stack + count - 1);
@@ -272,8 +364,10 @@ class WideFlattener {
   const std::vector<ObjectGpu>& m_objects;
   const std::vector<Node2>& m_nodes;
   const std::vector<PrimRef>& m_refs;
+  const MotionBoxes* m_motion;
   DeviceAccel& m_out;
   std::vector<BvhNodeGpu> m_wide;
+  std::vector<BvhMotionBoundsGpu> m_close;  // m_wide[i]'s children at shutter close
   std::vector<std::int32_t> m_ids;
   AccelStats m_stats;
   std::size_t m_leaves = 0;
@@ -285,15 +379,35 @@ class WideFlattener {
 
 void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, const AccelBuildOptions& options,
               DeviceAccel& out) {
+  // Over moving primitives with linear bounds, the tree groups primitives by
+  // their boxes at mid-shutter (the SAH of the time-averaged box, roughly) and
+  // each node keeps its children's boxes at open and close, which a ray
+  // interpolates to its time; without, it is built over the swept boxes.
+  const bool linear = prims.moving && options.bvh_linear_bounds && !prims.bounded.empty();
+  MotionBoxes prim_motion;
+  if (linear) prim_motion = primitiveMotionBoxes(objects, prims);
   std::vector<PrimRef> refs(prims.bounded.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
-    const Aabb& b = prims.bounds[i];
-    refs[i] = PrimRef{{b.lo[0], b.lo[1], b.lo[2]}, prims.bounded[i], {b.hi[0], b.hi[1], b.hi[2]}, 0};
+    Aabb b = prims.bounds[i];
+    if (linear)
+      for (int a = 0; a < 3; ++a) {
+        b.lo[a] = 0.5f * prim_motion.open[i].lo[a] + 0.5f * prim_motion.close[i].lo[a];
+        b.hi[a] = 0.5f * prim_motion.open[i].hi[a] + 0.5f * prim_motion.close[i].hi[a];
+      }
+    refs[i] = PrimRef{{b.lo[0], b.lo[1], b.lo[2]}, prims.bounded[i], {b.hi[0], b.hi[1], b.hi[2]},
+                      static_cast<std::int32_t>(i)};
   }
   ThreadBudget budget(options.threads);
   std::vector<Node2> nodes = refs.empty() ? std::vector<Node2>{} : Bvh2Builder(refs, budget).build();
   writeSceneHeader(prims.scene, out);
-  WideFlattener(objects, nodes, refs, out).run(prims.scene.area());
+  MotionBoxes motion;
+  const bool moving = linear && !nodes.empty();
+  if (moving) {
+    motion = nodeMotionBoxes(prim_motion, nodes, refs);
+    out.nodes[0].v[3] = prims.shutter_open;
+    out.nodes[1].v[3] = prims.shutter_close;
+  }
+  WideFlattener(objects, nodes, refs, moving ? &motion : nullptr, out).run(prims.scene.area());
   out.stats.references = refs.size();
   out.stats.mean_prims_per_leaf = out.stats.leaf_count ? double(refs.size()) / out.stats.leaf_count : 0;
   out.stats.duplication = 1;

@@ -72,8 +72,10 @@ bool invert(const float* m, double out[12]) {
 
 DecomposedTransform decomposedEnd(const MotionGpu& m, int end) {
   const float* t = end ? m.translate1 : m.translate0;
-  const float* q = end ? m.rotate1 : m.rotate0;
-  const float* s = end ? m.stretch1 : m.stretch0;
+  // A translation's record keeps its rotation and stretch in the close slots only.
+  const bool second = end || m.kind == MOTION_TRANSLATE;
+  const float* q = second ? m.rotate1 : m.rotate0;
+  const float* s = second ? m.stretch1 : m.stretch0;
   DecomposedTransform d;
   d.translate = {t[0], t[1], t[2]};
   double w2 = 1.0 - (double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2]);
@@ -87,14 +89,19 @@ DecomposedTransform decomposedEnd(const MotionGpu& m, int end) {
   return d;
 }
 
-// The world box swept by object-space box [lo, hi] over the whole motion: the
-// boxes at kSteps + 1 instants, each grown by how far any point of the box can
-// move before the next one (translation, stretch and rotation changes bounded
-// separately: |dT| + |dS| |x| + dphi |S x|), so the union covers every instant.
-void sweptBounds(const MotionGpu& motion, const double lo[3], const double hi[3], double wlo[3], double whi[3]) {
-  constexpr int kSteps = 64;
+struct Box3 {
+  double lo[3], hi[3];
+};
+
+// Boxes that bound object-space box [lo, hi] in world space over the motion:
+// box i holds it for every s in [i, i + 1] / kMotionSteps. Each is the box of
+// the corners at s = i / kMotionSteps grown by how far any point of the box can
+// move before the next step (translation, stretch and rotation changes bounded
+// separately: |dT| + |dS| |x| + dphi |S x|).
+constexpr int kMotionSteps = 64;
+std::vector<Box3> motionStepBoxes(const MotionGpu& motion, const double lo[3], const double hi[3]) {
   const DecomposedTransform a = decomposedEnd(motion, 0), b = decomposedEnd(motion, 1);
-  const double dphi = rotationAngle(a, b) / kSteps;
+  const double dphi = rotationAngle(a, b) / kMotionSteps;
   double radius = 0;  // of the object-space box around the origin
   for (int corner = 0; corner < 8; ++corner) {
     Vec3 c{(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]};
@@ -108,23 +115,52 @@ void sweptBounds(const MotionGpu& motion, const double lo[3], const double hi[3]
       stretch_step += (db - da) * (db - da);
     }
   stretch_norm *= 3;  // max entry x 3 bounds the Frobenius norm of a 3x3 matrix
-  stretch_step = std::sqrt(stretch_step) / kSteps;
-  const double move = length(b.translate - a.translate) / kSteps + stretch_step * radius + dphi * stretch_norm * radius;
-  for (int k = 0; k < 3; ++k) {
-    wlo[k] = INFINITY;
-    whi[k] = -INFINITY;
-  }
-  for (int step = 0; step <= kSteps; ++step) {
-    const Transform t = interpolate(a, b, static_cast<double>(step) / kSteps);
+  stretch_step = std::sqrt(stretch_step) / kMotionSteps;
+  const double move =
+      length(b.translate - a.translate) / kMotionSteps + stretch_step * radius + dphi * stretch_norm * radius;
+  std::vector<Box3> boxes(kMotionSteps);
+  for (int step = 0; step < kMotionSteps; ++step) {
+    const Transform t = interpolate(a, b, static_cast<double>(step) / kMotionSteps);
+    Box3& box = boxes[step];
+    for (int k = 0; k < 3; ++k) {
+      box.lo[k] = INFINITY;
+      box.hi[k] = -INFINITY;
+    }
     for (int corner = 0; corner < 8; ++corner) {
       const Vec3 w = t.applyPoint({(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]});
       const double wv[3] = {w.x, w.y, w.z};
       for (int k = 0; k < 3; ++k) {
-        wlo[k] = std::min(wlo[k], wv[k] - move);
-        whi[k] = std::max(whi[k], wv[k] + move);
+        box.lo[k] = std::min(box.lo[k], wv[k] - move);
+        box.hi[k] = std::max(box.hi[k], wv[k] + move);
       }
     }
   }
+  return boxes;
+}
+
+// The padding for the kernels' float transform of a box this size and place.
+double floatPad(const Box3& b) {
+  double extent = 0, magnitude = 0;
+  for (int a = 0; a < 3; ++a) {
+    extent = std::max(extent, b.hi[a] - b.lo[a]);
+    magnitude = std::max({magnitude, std::fabs(b.lo[a]), std::fabs(b.hi[a])});
+  }
+  return 1e-5 * (extent + magnitude) + 1e-30;
+}
+
+// The float box just outside [lo - pad, hi + pad]; false if it does not fit a float.
+bool toAabb(const double lo[3], const double hi[3], double pad, Aabb* out) {
+  const float inf = std::numeric_limits<float>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    out->lo[a] = std::nextafter(roundDown(lo[a] - pad), -inf);
+    out->hi[a] = std::nextafter(roundUp(hi[a] + pad), inf);
+    if (!std::isfinite(out->lo[a]) || !std::isfinite(out->hi[a])) return false;
+  }
+  return true;
+}
+
+const MotionGpu& motionOf(const ObjectGpu& ob) {
+  return *reinterpret_cast<const MotionGpu*>(&ob + (ob.flags >> OBJECT_MOTION_SHIFT));
 }
 
 }  // namespace
@@ -145,21 +181,13 @@ bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
   double lo[3], hi[3];
   if (ob.type == OBJECT_PLANE || !localBounds(ob, lo, hi)) return false;
   if (ob.has_transform == OBJECT_MOVING) {
-    MotionGpu motion;
-    std::memcpy(&motion, &ob + (ob.flags >> OBJECT_MOTION_SHIFT), sizeof motion);
-    double wlo[3], whi[3];
-    sweptBounds(motion, lo, hi, wlo, whi);
-    // Pad for the kernels' float transform, as for a static one.
-    double extent = 0, magnitude = 0;
-    for (int a = 0; a < 3; ++a) {
-      extent = std::max(extent, whi[a] - wlo[a]);
-      magnitude = std::max({magnitude, std::fabs(wlo[a]), std::fabs(whi[a])});
-    }
-    const double pad = 1e-5 * (extent + magnitude) + 1e-30;
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = wlo[a] - pad;
-      hi[a] = whi[a] + pad;
-    }
+    Box3 swept{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+    for (const Box3& b : motionStepBoxes(motionOf(ob), lo, hi))
+      for (int a = 0; a < 3; ++a) {
+        swept.lo[a] = std::min(swept.lo[a], b.lo[a]);
+        swept.hi[a] = std::max(swept.hi[a], b.hi[a]);
+      }
+    return toAabb(swept.lo, swept.hi, floatPad(swept), bounds);
   } else if (ob.has_transform) {
     // The device maps rays into object space with the float matrix; its inverse
     // in double, padded, bounds the shape that matrix describes.
@@ -205,6 +233,40 @@ bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
   return true;
 }
 
+bool objectLinearBounds(const ObjectGpu& ob, Aabb* open, Aabb* close) {
+  if (ob.has_transform != OBJECT_MOVING) {
+    if (!objectBounds(ob, open)) return false;
+    *close = *open;
+    return true;
+  }
+  double lo[3], hi[3];
+  if (!localBounds(ob, lo, hi)) return false;
+  const std::vector<Box3> steps = motionStepBoxes(motionOf(ob), lo, hi);
+  const int n = static_cast<int>(steps.size());
+  // Start from the first and last step's boxes, then move each face out by the
+  // most that the straight line between them cuts into a step's box at either
+  // end of the step's interval.
+  Box3 a = steps.front(), b = steps.back(), swept = a;
+  for (int axis = 0; axis < 3; ++axis) {
+    double push_lo = 0, push_hi = 0;
+    for (int i = 0; i < n; ++i) {
+      for (int end = 0; end < 2; ++end) {
+        const double s = static_cast<double>(i + end) / n;
+        push_lo = std::max(push_lo, a.lo[axis] + s * (b.lo[axis] - a.lo[axis]) - steps[i].lo[axis]);
+        push_hi = std::max(push_hi, steps[i].hi[axis] - (a.hi[axis] + s * (b.hi[axis] - a.hi[axis])));
+      }
+      swept.lo[axis] = std::min(swept.lo[axis], steps[i].lo[axis]);
+      swept.hi[axis] = std::max(swept.hi[axis], steps[i].hi[axis]);
+    }
+    a.lo[axis] -= push_lo;
+    b.lo[axis] -= push_lo;
+    a.hi[axis] += push_hi;
+    b.hi[axis] += push_hi;
+  }
+  const double pad = floatPad(swept);
+  return toAabb(a.lo, a.hi, pad, open) && toAabb(b.lo, b.hi, pad, close);
+}
+
 PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
   PrimitiveSet set;
   set.bounded.reserve(objects.size());
@@ -216,6 +278,11 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
       set.bounded.push_back(static_cast<std::int32_t>(i));
       set.bounds.push_back(b);
       set.scene.extend(b);
+      if (objects[i].has_transform == OBJECT_MOVING && !set.moving) {
+        set.moving = true;
+        set.shutter_open = motionOf(objects[i]).shutter_open;
+        set.shutter_close = motionOf(objects[i]).shutter_close;
+      }
     } else {
       set.unbounded.push_back(static_cast<std::int32_t>(i));
     }

@@ -57,11 +57,19 @@ inline CellBox toCell(const Aabb& b) { return {{b.lo[0], b.lo[1], b.lo[2]}, {b.h
 // array, its motion record further on in it: its box covers its whole motion.
 bool objectBounds(const ObjectGpu& object, Aabb* bounds);
 
+// Linear bounds (Embree's linear motion blur): boxes at shutter open and close
+// such that lerp(open, close, s) holds the object at every s in [0, 1] of its
+// motion. A static object's two boxes are its objectBounds.
+bool objectLinearBounds(const ObjectGpu& object, Aabb* open, Aabb* close);
+
 struct PrimitiveSet {
   std::vector<std::int32_t> bounded;  // object indices, in object order
-  std::vector<Aabb> bounds;           // bounds[i] is the box of object bounded[i]
+  std::vector<Aabb> bounds;           // bounds[i] is the box of object bounded[i] (over its whole motion)
   std::vector<std::int32_t> unbounded;
   Aabb scene;  // union of `bounds`
+  // Whether some bounded primitive moves, and the shutter its motion spans.
+  bool moving = false;
+  float shutter_open = 0, shutter_close = 0;
 };
 
 PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects);

@@ -115,6 +115,17 @@ MotionGpu flattenMotion(const Transform& open, const Transform& close, const Cam
     const double packed[6] = {st[0][0], st[0][1], st[0][2], st[1][1], st[1][2], st[2][2]};
     for (int i = 0; i < 6; ++i) stretch[e][i] = static_cast<float>(packed[i]);
   }
+  // Translation alone: keep the constant world-to-object linear part instead.
+  if (std::memcmp(g.rotate0, g.rotate1, sizeof g.rotate0) == 0 &&
+      std::memcmp(g.stretch0, g.stretch1, sizeof g.stretch0) == 0) {
+    g.kind = MOTION_TRANSLATE;
+    const Transform inv = open.inverse();
+    float linear[9];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) linear[3 * i + j] = static_cast<float>(inv.m[i][j]);
+    std::memcpy(g.rotate0, linear, 3 * sizeof(float));
+    std::memcpy(g.stretch0, linear + 3, 6 * sizeof(float));
+  }
   return g;
 }
 

@@ -94,7 +94,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_objects = Buffer(m_context, gpu.objects.size() * sizeof(ObjectGpu));
   m_objects.writeVector(gpu.objects);
   {
-    std::unique_ptr<DeviceAccel> accel = buildAccel(options.accel, gpu.objects);
+    std::unique_ptr<DeviceAccel> accel = buildAccel(options.accel, gpu.objects, m_accel_build);
     m_accel.upload(m_context, *accel);
     result.stats.accel = options.accel;
     result.stats.accel_stats = accel->stats;

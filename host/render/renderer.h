@@ -86,6 +86,10 @@ class Renderer {
   void setFilmBatchSlices(size_t slices) { m_film_batch_slices = slices > 0 ? slices : 1; }
   size_t filmBatchSlices() const { return m_film_batch_slices; }
 
+  // How the next renders build their acceleration structure (the defaults
+  // unless set); the image does not depend on it.
+  void setAccelBuildOptions(const AccelBuildOptions& options) { m_accel_build = options; }
+
  private:
   // The sampling modes whose positions come from kernels/supersample.cl, resolved
   // by kernels/resolve.cl.
@@ -132,6 +136,7 @@ class Renderer {
   int m_shadow_slots = 0;  // shadow feelers per shaded point: the lights' samples summed
   bool m_area_lights = false;
   size_t m_film_batch_slices = 256;
+  AccelBuildOptions m_accel_build;
   AccelBuffers m_accel;
   Buffer m_camera, m_objects, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
   Buffer m_film;       // rgba per primary sample, indexed by the sample's key

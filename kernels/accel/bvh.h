@@ -10,14 +10,29 @@
 #include "accel/leaf_packets.h"
 #include "shared/bvh_node_gpu.h"
 
+/* A node's size in float8 words: the node, then with moving primitives its
+ * children's boxes at shutter close (shared/bvh_node_gpu.h). */
+#ifdef PRISM_BVH_MOTION
+#define BVH_NODE_WORDS 13
+#else
+#define BVH_NODE_WORDS 7
+#endif
+
 typedef struct BvhRay {
   float8 ox, oy, oz, ix, iy, iz;
   int nx, ny, nz; /* float8 index of the near slab per axis; far is index ^ 1 */
+#ifdef PRISM_BVH_MOTION
+  float8 s; /* the ray's time as a fraction of the shutter */
+#endif
 } BvhRay;
 
-PRISM_HOT BvhRay bvh_ray(float3 o, float3 d) {
+PRISM_HOT BvhRay bvh_ray(float3 o, float3 d, float time, __global const float4* header) {
   float3 inv = accel_safe_rcp(d);
   BvhRay r;
+#ifdef PRISM_BVH_MOTION
+  float open = header[0].w, close = header[1].w;
+  r.s = (float8)(close > open ? clamp((time - open) / (close - open), 0.0f, 1.0f) : 0.0f);
+#endif
   r.ox = (float8)(o.x);
   r.oy = (float8)(o.y);
   r.oz = (float8)(o.z);
@@ -34,13 +49,18 @@ PRISM_HOT BvhRay bvh_ray(float3 o, float3 d) {
  * distances in *tn. The limit is scaled with the far distances: a primitive
  * whose t ties the best hit to the last bits (a vertex shared by several
  * triangles at a box corner) must still be reached. */
+#ifdef PRISM_BVH_MOTION
+#define BVH_SLAB(k) mix(n[k], n[7 + (k)], r->s)
+#else
+#define BVH_SLAB(k) n[k]
+#endif
 PRISM_HOT int bvh_node_mask(__global const float8* n, const BvhRay* r, float tmin, float tlimit, float8* tn) {
-  float8 nx = (n[r->nx] - r->ox) * r->ix;
-  float8 ny = (n[r->ny] - r->oy) * r->iy;
-  float8 nz = (n[r->nz] - r->oz) * r->iz;
-  float8 fx = (n[r->nx ^ 1] - r->ox) * r->ix;
-  float8 fy = (n[r->ny ^ 1] - r->oy) * r->iy;
-  float8 fz = (n[r->nz ^ 1] - r->oz) * r->iz;
+  float8 nx = (BVH_SLAB(r->nx) - r->ox) * r->ix;
+  float8 ny = (BVH_SLAB(r->ny) - r->oy) * r->iy;
+  float8 nz = (BVH_SLAB(r->nz) - r->oz) * r->iz;
+  float8 fx = (BVH_SLAB(r->nx ^ 1) - r->ox) * r->ix;
+  float8 fy = (BVH_SLAB(r->ny ^ 1) - r->oy) * r->iy;
+  float8 fz = (BVH_SLAB(r->nz ^ 1) - r->oz) * r->iz;
   float8 near_t = fmax(fmax(nx, ny), fmax(nz, (float8)(tmin)));
   float8 far_t = fmin(fmin(fmin(fx, fy), fz), (float8)(tlimit)) * ACCEL_FAR_SCALE;
   int8 hit = near_t <= far_t;
@@ -61,7 +81,7 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float
   accel_miss(hit);
   float best = tmax;
   unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
-  BvhRay r = bvh_ray(o, d);
+  BvhRay r = bvh_ray(o, d, time, accel_nodes);
   PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack_code[PRISM_ACCEL_STACK];
@@ -70,7 +90,7 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float
   int code = 0; /* the root */
   for (;;) {
     if (code >= 0) {
-      __global const float8* n = nodes + 7 * code;
+      __global const float8* n = nodes + BVH_NODE_WORDS * code;
       float8 tn;
       int mask = bvh_node_mask(n, &r, tmin, best, &tn);
       if (mask) {
@@ -119,7 +139,7 @@ PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* ma
                                     float tmin, float tmax) {
   float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
-  BvhRay r = bvh_ray(o, d);
+  BvhRay r = bvh_ray(o, d, time, accel_nodes);
   PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack[PRISM_ACCEL_STACK];
@@ -127,7 +147,7 @@ PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* ma
   int code = 0;
   for (;;) {
     if (code >= 0) {
-      __global const float8* n = nodes + 7 * code;
+      __global const float8* n = nodes + BVH_NODE_WORDS * code;
       float8 tn;
       int mask = bvh_node_mask(n, &r, tmin, tmax, &tn);
       __global const int* child = (__global const int*)(n + 6);

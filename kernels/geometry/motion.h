@@ -24,6 +24,14 @@ inline void motion_world_to_object(__global const MotionGpu* motion, float time,
   float open = motion->shutter_open, close = motion->shutter_close;
   float s = close > open ? clamp((time - open) / (close - open), 0.0f, 1.0f) : 0.0f;
   float3 t = mix(vload3(0, motion->translate0), vload3(0, motion->translate1), s);
+  if (motion->kind == MOTION_TRANSLATE) {
+    __global const float* linear = motion->rotate0; /* rotate0 and stretch0: 9 floats, row by row */
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) m[4 * i + j] = linear[3 * i + j];
+      m[4 * i + 3] = -(m[4 * i] * t.x + m[4 * i + 1] * t.y + m[4 * i + 2] * t.z);
+    }
+    return;
+  }
   float3 a0 = vload3(0, motion->rotate0), a1 = vload3(0, motion->rotate1);
   float4 q0 = (float4)(a0, sqrt(fmax(0.0f, 1.0f - dot(a0, a0))));
   float4 q1 = (float4)(a1, sqrt(fmax(0.0f, 1.0f - dot(a1, a1))));

@@ -22,4 +22,16 @@ typedef struct BvhNodeGpu {
   int child[8];           /* 6 */
 } BvhNodeGpu;
 
+/* Over moving primitives (-DPRISM_BVH_MOTION) each node is followed by its
+ * children's boxes at shutter close (192 bytes = 6 float8), the node's own being
+ * those at shutter open; a ray at fraction s of the shutter tests the boxes
+ * lerp(open, close, s), which hold each child over its whole motion (linear
+ * bounds, as in Embree's linear motion blur). The header words' w lanes hold
+ * the shutter interval. */
+typedef struct BvhMotionBoundsGpu {
+  float lo_x[8], hi_x[8];
+  float lo_y[8], hi_y[8];
+  float lo_z[8], hi_z[8];
+} BvhMotionBoundsGpu;
+
 #endif
