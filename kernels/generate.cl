@@ -19,12 +19,18 @@ __kernel void generate(__global const CameraGpu* camera, __global const float* x
   int key = first_key + k;
   int sample = key % spp;
   int group = (int)((group_base + (long)key) / (long)spp);
+  float3 o, d;
+  float time;
+#ifdef PRISM_DISTRIBUTED_CAMERA /* a lens or a shutter interval (host: kernelFeatures) */
   uint seed = (uint)camera->seed;
   float u_time = ray_sample_1d(seed, strata, group, sample, DIM_TIME);
   float2 u_lens = ray_sample_2d(seed, strata, group, sample, DIM_LENS, 0, 1);
-  float3 o, d;
-  float time;
   camera_ray(camera, xy[2 * k], xy[2 * k + 1], u_time, u_lens, &o, &d, &time);
+#else /* a pinhole at one instant */
+  o = load3g(camera->origin);
+  d = camera_ray_dir(camera, xy[2 * k], xy[2 * k + 1]);
+  time = camera->shutter_open;
+#endif
   RayGpu r = ray_make(o, d, 0.0f, PRISM_INF, (float3)(1.0f, 1.0f, 1.0f), key, 0, RAY_KIND_PRIMARY, sample);
   r.aov_pixel = aov_pixel[k];
   r.time = time;

@@ -40,6 +40,15 @@ inline ContributionGpu contribution(float3 c, float a, int pixel) {
 
 inline void put4(__global float* dst, float3 v, float w) { vstore4((float4)(v, w), 0, dst); }
 
+/* The 2-D sample of one lobe of the ray's hit; nothing to draw without lobes. */
+inline float2 lobe_sample(uint seed, int strata, RayGpu ray, int lobe) {
+#ifdef PRISM_LOBES
+  return ray_sample_2d(seed, strata, ray.strata_id, ray.sample, ray.dim + lobe, 0, 1);
+#else
+  return (float2)(0.0f, 0.0f);
+#endif
+}
+
 __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count,
                     __global const ObjectGpu* objects, __global const MaterialGpu* materials,
                     __global const LightGpu* lights, int light_count, int area_lights, float4 ambient,
@@ -61,6 +70,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   surfaces[k].material = -1;
 
   /* An area light in front of the hit (or of nothing) is what the ray sees. */
+#ifdef PRISM_AREA_LIGHTS /* built for scenes with area lights (host: kernelFeatures) */
   if (area_lights) {
     float t_light = hit.prim < 0 ? PRISM_INF : hit.t;
     int seen = -1;
@@ -79,6 +89,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
       return;
     }
   }
+#endif
 
   if (hit.prim < 0) {
     emit[k] = contribution(weight * background.xyz, 0.0f, ray.pixel);
@@ -128,7 +139,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
     if (refract_dir(i_dir, nf, eta, &t_dir)) {
       float3 w = weight * m->transmit;
       if (max3(w) >= min_weight) {
-        float2 u = ray_sample_2d(seed, strata, ray.strata_id, ray.sample, ray.dim + DIM_TRANSMIT_LOBE, 0, 1);
+        float2 u = lobe_sample(seed, strata, ray, DIM_TRANSMIT_LOBE);
         children[2 * k + 1] = ray_child(ray, p - eps * nf, material_transmit_dir(m, t_dir, nf, u), PRISM_INF, w,
                                         ray.depth + 1, RAY_KIND_REFRACTED, child_dim);
       }
@@ -139,7 +150,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   if (k_reflect > 0.0f) {
     float3 w = weight * k_reflect;
     if (max3(w) >= min_weight) {
-      float2 u = ray_sample_2d(seed, strata, ray.strata_id, ray.sample, ray.dim + DIM_REFLECT_LOBE, 0, 1);
+      float2 u = lobe_sample(seed, strata, ray, DIM_REFLECT_LOBE);
       children[2 * k] = ray_child(ray, p_out, material_reflect_dir(m, i_dir, nf, u), PRISM_INF, w, ray.depth + 1,
                                   RAY_KIND_REFLECTED, child_dim);
     }

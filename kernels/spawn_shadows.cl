@@ -30,7 +30,11 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
   }
   __global const LightGpu* light = &lights[l];
   float3 p_out = load3g(s->p), nf = load3g(s->n);
+#ifdef PRISM_AREA_LIGHTS /* point lights need no sample (host: kernelFeatures) */
   float2 u = ray_sample_2d(seed, strata, s->strata_id, s->sample, s->dim + DIM_FIRST_LIGHT + l, r, light->samples);
+#else
+  float2 u = (float2)(0.0f, 0.0f);
+#endif
   float3 ldir, scale;
   float dist;
   if (!light_sample(light, p_out, u, &ldir, &dist, &scale)) return;

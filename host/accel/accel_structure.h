@@ -58,8 +58,9 @@ struct alignas(16) AccelWord {
 // one set whichever is chosen.
 struct DeviceAccel {
   AccelKind kind = AccelKind::None;
-  // Build options for extend.cl / occlude.cl: -DPRISM_ACCEL_<KIND> and the
-  // traversal stack depth this tree needs.
+  // Build options for extend.cl / occlude.cl: -DPRISM_ACCEL_<KIND>, the
+  // traversal stack depth this tree needs, and kMotionKernelOption when some
+  // primitive moves.
   std::string kernel_options;
   // Words 0 and 1: the scene box of the bounded primitives (lo xyz, hi xyz);
   // from word 2: the structure's nodes (BvhNodeGpu, OctreeNodeGpu, BspNodeGpu).
@@ -68,6 +69,10 @@ struct DeviceAccel {
   std::vector<std::int32_t> unbounded;     // object indices tested by every ray
   AccelStats stats;
 };
+
+// The kernel build option that compiles moving objects' intersection
+// (kernels/geometry/motion.h); programs without it never see a moving object.
+constexpr const char* kMotionKernelOption = "-DPRISM_MOTION";
 
 struct AccelBuildOptions {
   int threads = 0;  // 0: std::thread::hardware_concurrency()

@@ -29,12 +29,28 @@ std::string gib(double bytes) {
   return text;
 }
 
+// Build options naming the distributed features a scene uses (kernels/*.cl test
+// them with #ifdef).
+struct KernelFeatures {
+  std::string camera;   // generate: a lens or a shutter interval
+  std::string shading;  // shade, spawn_shadows: moving objects, area lights, lobes
+};
+
+KernelFeatures kernelFeatures(const Scene& scene, const GpuScene& gpu) {
+  KernelFeatures f;
+  if (!scene.camera.isPinhole()) f.camera = "-DPRISM_DISTRIBUTED_CAMERA";
+  if (gpu.primitive_count < gpu.objects.size()) f.shading += std::string(" ") + kMotionKernelOption;
+  bool area = false, lobes = false;
+  for (const LightGpu& l : gpu.lights) area = area || l.type != LIGHT_POINT;
+  for (const MaterialGpu& m : gpu.materials) lobes = lobes || m.gloss > 0 || m.translucency > 0;
+  if (area) f.shading += " -DPRISM_AREA_LIGHTS";
+  if (lobes) f.shading += " -DPRISM_LOBES";
+  return f;
+}
+
 }  // namespace
 
 Renderer::Renderer(Context& context) : m_context(context) {
-  m_generate = context.kernel("generate.cl", "generate");
-  m_shade = context.kernel("shade.cl", "shade");
-  m_spawn_shadows = context.kernel("spawn_shadows.cl", "spawn_shadows");
   m_count = context.kernel("count_rays.cl", "count_rays");
   m_scan = context.kernel("scan_blocks.cl", "scan_blocks");
   m_scatter = context.kernel("scatter_rays.cl", "scatter_rays");
@@ -60,6 +76,12 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
                                 ": its primary rays do not share one origin and instant; use first hit trace or auto");
 
   GpuScene gpu = flattenScene(scene, options);
+  // Each distributed effect's code is compiled only into the programs of scenes
+  // that use it, so a Whitted scene builds what it did before (PoCL compiles slowly).
+  const KernelFeatures features = kernelFeatures(scene, gpu);
+  m_generate = m_context.kernel("generate.cl", "generate", features.camera);
+  m_shade = m_context.kernel("shade.cl", "shade", features.shading);
+  m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shading);
   RenderResult result;
   result.width = options.width;
   result.height = options.height;

@@ -28,11 +28,13 @@ inline float3 xform_normal(const float* m, float3 n) {
 
 /* The world-to-object matrix of a transformed object at `time`, into m. */
 inline void object_world_to_object(__global const ObjectGpu* ob, float time, float* m) {
+#ifdef PRISM_MOTION /* built only for scenes with moving objects (host: kMotionKernelOption) */
   if (ob->has_transform == OBJECT_MOVING) {
     motion_world_to_object((__global const MotionGpu*)(ob + (ob->flags >> OBJECT_MOTION_SHIFT)), time, m);
-  } else {
-    for (int i = 0; i < 12; ++i) m[i] = ob->world_to_object[i];
+    return;
   }
+#endif
+  for (int i = 0; i < 12; ++i) m[i] = ob->world_to_object[i];
 }
 
 /* The ray (o, d) at `time` against one object; t is the ray's own parameter. */

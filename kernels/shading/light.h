@@ -28,6 +28,9 @@ inline bool light_sample(__global const LightGpu* light, float3 p, float2 u, flo
     *scale = color;
     return true;
   }
+#ifndef PRISM_AREA_LIGHTS /* built for scenes with area lights (host: kernelFeatures) */
+  return false;
+#else
   float3 c = load3g(light->position);
   if (light->type == LIGHT_SPHERE) {
     /* Uniform in the cone of directions the sphere fills (its visible cap). */
@@ -91,6 +94,7 @@ inline bool light_sample(__global const LightGpu* light, float3 p, float2 u, flo
   *dist = r;
   *scale = color * (light->color[3] * cos_y / (r2 * PRISM_PI));
   return cos_y > 0.0f;
+#endif
 }
 
 /* The nearest t in (0, tmax) where ray (o, d) meets area light `light`, or

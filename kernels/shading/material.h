@@ -35,14 +35,18 @@ inline float3 fold_to_side(float3 d, float3 nf, float side) {
  * the viewer). */
 inline float3 material_reflect_dir(__global const MaterialGpu* m, float3 i_dir, float3 nf, float2 u) {
   float3 mirror = reflect_dir(i_dir, nf);
-  if (m->gloss <= 0.0f) return mirror;
-  return fold_to_side(sample_phong_lobe(mirror, m->gloss, u), nf, 1.0f);
+#ifdef PRISM_LOBES /* built for scenes with a glossy or translucent material (host: kernelFeatures) */
+  if (m->gloss > 0.0f) return fold_to_side(sample_phong_lobe(mirror, m->gloss, u), nf, 1.0f);
+#endif
+  return mirror;
 }
 
 /* The refracted ray's direction around Snell's direction t_dir. */
 inline float3 material_transmit_dir(__global const MaterialGpu* m, float3 t_dir, float3 nf, float2 u) {
-  if (m->translucency <= 0.0f) return t_dir;
-  return fold_to_side(sample_phong_lobe(t_dir, m->translucency, u), nf, -1.0f);
+#ifdef PRISM_LOBES
+  if (m->translucency > 0.0f) return fold_to_side(sample_phong_lobe(t_dir, m->translucency, u), nf, -1.0f);
+#endif
+  return t_dir;
 }
 
 #endif
