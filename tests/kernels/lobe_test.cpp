@@ -55,7 +55,7 @@ std::vector<Vec3> probe(int mode, const std::vector<Case>& cases, const Material
     for (double v : {c.v0.x, c.v0.y, c.v0.z, c.v1.x, c.v1.y, c.v1.z, double(c.u0), double(c.u1), double(c.s)})
       in.push_back(static_cast<float>(v));
   Context& ctx = test::sharedContext();
-  cl_kernel kernel = ctx.kernelFromText(kProbe, "lobe_probe.cl", "lobe_probe");
+  cl_kernel kernel = ctx.kernelFromText(kProbe, "lobe_probe.cl", "lobe_probe", "-DPRISM_LOBES");  // as for a scene with lobes
   Buffer in_buf(ctx, in.size() * sizeof(float)), out_buf(ctx, cases.size() * 3 * sizeof(float));
   Buffer m_buf(ctx, sizeof(MaterialGpu));
   in_buf.writeVector(in);
