@@ -764,7 +764,7 @@ void checkConvergence(const char* what, const std::vector<int>& ns, const Conver
 
 }  // namespace
 
-TEST_CASE("soft shadows, depth of field and gloss converge at least as N^-1/2, stratified ahead of independent",
+TEST_CASE("every distributed effect converges at least as N^-1/2, stratified ahead of independent",
           "[render][distributed][convergence]") {
   const std::vector<int> ns = {4, 16, 64};
   SECTION("soft shadows") {
@@ -802,6 +802,38 @@ TEST_CASE("soft shadows, depth of field and gloss converge at least as N^-1/2, s
     double var = 0;
     std::vector<float> ref = reference(scene, 1024, var);
     checkConvergence("gloss", ns, convergence(scene, ns, ref, var));
+  }
+  SECTION("translucency") {
+    // A frosted sphere in front of a checker chart: what it shows is the chart
+    // blurred through the refracted lobe.
+    Scene scene = parseScene(R"({"camera": {"position": [0, 0, 4], "look_at": [0, 0, 0], "fov": 35},
+      "film": {"width": 32, "height": 24},
+      "render": {"max_depth": 3, "ambient": [1, 1, 1]},
+      "materials": {"frosted": {"ambient": 0, "diffuse": 0, "transmit": 1, "ior": 1.3, "translucency": 60},
+                    "chart": {"ambient": 1, "diffuse": 0,
+                              "texture": {"type": "checker", "color1": 1, "color2": 0, "scale": 0.25}}},
+      "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "frosted"},
+                  {"type": "plane", "point": [0, 0, -3], "normal": [0, 0, 1], "material": "chart"}]})",
+                             "translucency.json");
+    double var = 0;
+    std::vector<float> ref = reference(scene, 1024, var);
+    checkConvergence("translucency", ns, convergence(scene, ns, ref, var));
+  }
+  SECTION("motion blur") {
+    // A white sphere sliding across a dark chart during the shutter.
+    Scene scene = parseScene(R"({"camera": {"position": [0, 0, 6], "look_at": [0, 0, 0], "fov": 30, "shutter": [0, 1]},
+      "film": {"width": 32, "height": 24},
+      "render": {"max_depth": 0, "ambient": [1, 1, 1]},
+      "materials": {"white": {"ambient": 1, "diffuse": 0},
+                    "chart": {"ambient": 1, "diffuse": 0,
+                              "texture": {"type": "checker", "color1": 0.3, "color2": 0, "scale": 0.5}}},
+      "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.6, "material": "white",
+                   "transform": {"translate": [-1, 0, 0]}, "transform_end": {"translate": [1, 0.3, 0]}},
+                  {"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "chart"}]})",
+                             "motion.json");
+    double var = 0;
+    std::vector<float> ref = reference(scene, 1024, var);
+    checkConvergence("motion blur", ns, convergence(scene, ns, ref, var));
   }
 }
 
@@ -846,6 +878,14 @@ const char* kEffects[][2] = {
       "lights": [{"position": [2, 4, 3]}],
       "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"},
                   {"type": "sphere", "center": [0.5, 0.5, -1], "radius": 0.5}]})"},
+    {"moving objects", R"({"camera": {"position": [0, 1, 4], "look_at": [0, 0.5, 0], "fov": 45, "shutter": [0, 1]},
+      "film": {"width": 40, "height": 30},
+      "render": {"max_depth": 1},
+      "materials": {"floor": {"texture": {"type": "checker", "color1": 0.9, "color2": 0.1, "scale": 0.5}}},
+      "lights": [{"position": [2, 4, 3]}],
+      "objects": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"},
+                  {"type": "sphere", "center": [0.5, 0.5, -1], "radius": 0.5,
+                   "transform_end": [{"rotate": {"axis": [0, 1, 0], "angle": 40}}, {"translate": [-0.5, 0.2, 0]}]}]})"},
     {"moving camera", R"({"camera": {"position": [0, 1, 4], "look_at": [0, 0.5, 0], "fov": 45,
                                      "shutter": [0, 1], "position_end": [0.5, 1.2, 4], "look_at_end": [0.2, 0.5, 0]},
       "film": {"width": 40, "height": 30},
