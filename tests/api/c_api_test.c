@@ -177,9 +177,65 @@ int main(int argc, char** argv) {
     CHECK_OK(prismSetCamera(scene, &cam));
     CHECK_OK(prismGetCamera(scene, &bad));
     CHECK(bad.fov_degrees == 20.0f);
+    /* Depth of field and motion blur fields go through the same checks as the
+     * scene format's camera. */
+    bad = cam;
+    bad.shutter_open = 1.0f;
+    bad.shutter_close = 0.5f;
+    CHECK(prismSetCamera(scene, &bad) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "shutter") != NULL);
+    bad = cam;
+    bad.aperture = -1.0f;
+    CHECK(prismSetCamera(scene, &bad) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "aperture") != NULL);
+    cam.aperture = 0.05f;
+    cam.focus_distance = 4.0f;
+    cam.shutter_close = 1.0f;
+    CHECK_OK(prismSetCamera(scene, &cam));
+    CHECK_OK(prismGetCamera(scene, &bad));
+    CHECK(bad.aperture == 0.05f && bad.focus_distance == 4.0f && bad.shutter_close == 1.0f && !bad.moving);
+    cam.aperture = 0.0f;
+    cam.shutter_close = 0.0f;
+    CHECK_OK(prismSetCamera(scene, &cam));
     CHECK_OK(prismParseAccel("octree", &accel));
     CHECK(accel == PRISM_ACCEL_OCTREE && strcmp(prismAccelName(accel), "octree") == 0);
     CHECK(prismParseAccel("kdtree", &accel) == PRISM_ERROR_INVALID_ARGUMENT);
+  }
+
+  /* Area lights: the scene loader's checks and messages; a valid one renders. */
+  {
+    PrismAreaLight light;
+    float* before = (float*)malloc(sizeof(float) * 4 * pixels);
+    float* lit = (float*)malloc(sizeof(float) * 4 * pixels);
+    size_t k, brighter = 0, darker = 0;
+    memset(&light, 0, sizeof light);
+    light.struct_size = sizeof light;
+    light.type = PRISM_LIGHT_QUAD;
+    light.corner[1] = 6.0f;
+    light.edge1[0] = 1.0f;
+    light.edge2[0] = 2.0f; /* parallel to edge1: no area */
+    light.color[0] = light.color[1] = light.color[2] = 1.0f;
+    light.intensity = 1.0f;
+    light.samples = 4;
+    CHECK(prismAddAreaLight(scene, &light) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "parallel") != NULL);
+    light.edge2[0] = 0.0f;
+    light.edge2[2] = 1.0f;
+    light.samples = 0;
+    CHECK(prismAddAreaLight(scene, &light) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "samples") != NULL);
+    light.samples = 4;
+    light.intensity = 50.0f;
+    CHECK_OK(prismRender(ctx, scene, &opts, before, NULL));
+    CHECK_OK(prismAddAreaLight(scene, &light));
+    CHECK_OK(prismRender(ctx, scene, &opts, lit, NULL));
+    for (k = 0; k < pixels; ++k) {
+      brighter += lit[4 * k] > before[4 * k];
+      darker += lit[4 * k] < before[4 * k];
+    }
+    CHECK(brighter > 0 && darker == 0); /* a light only adds to what it reaches */
+    free(before);
+    free(lit);
   }
 
   /* A progress callback that returns nonzero cancels the render. */
