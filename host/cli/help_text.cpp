@@ -132,7 +132,8 @@ Speed:
   --first-hit M     how primary visibility is found: zbuffer (a first-hit pass over
                     screen tiles of primitives, no ray traversal), trace (primary
                     rays through the --accel structure), or auto (default: zbuffer
-                    whenever the camera allows it). Both give the same image.
+                    whenever the camera allows it: no aperture, no shutter
+                    interval). Both give the same image.
 
 Device:
   --device D        the OpenCL device: an index from 'prism devices', 'cpu', 'gpu', or
