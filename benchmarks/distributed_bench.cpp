@@ -22,8 +22,8 @@ const char* kUsage =
     "samples per pixel (default size 160x120): samples/s, rays per sample, the\n"
     "cost of N spp over 1 spp (time ratio), and the motion scene against itself\n"
     "held still; then moving primitives in each structure (4000 spheres moving\n"
-    "their own ways, a 100k-triangle torus sliding, at a quarter of the pixels and\n"
-    "timed once). Times are the median of --repeat runs (default 3) after one\n"
+    "their own ways, a 100k-triangle torus sliding, at a quarter of the pixels).\n"
+    "Times are the median of --repeat runs (default 3) after one\n"
     "untimed run, render time only (no kernel compilation).\n";
 
 struct Run {
@@ -178,11 +178,11 @@ int distributedMain(const std::vector<std::string>& args) {
       std::printf("\n%-26s %d spp %5s %12s %14s\n", workload == 0 ? "4000 moving spheres," : "sliding torus 100k tris,",
                   spp, workload == 0 ? "" : "(1/4)", "Ms/s", "time / still");
       RenderOptions options = RenderOptions::fromScene(moving);
-      // The torus at a quarter of the pixels, timed once: the octree takes
-      // hundreds of times longer on it than on the still torus.
+      // The torus at a quarter of the pixels: the octree takes tens of times
+      // longer on it than on the still torus.
       options.width = workload == 0 ? width : std::max(1, width / 2);
       options.height = workload == 0 ? height : std::max(1, height / 2);
-      const int runs = workload == 0 ? repeats : 1;
+      const int runs = repeats;
       options.spp = spp;
       options.first_hit = FirstHitMode::Trace;
       struct Contender {

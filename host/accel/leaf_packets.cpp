@@ -24,27 +24,57 @@ void putTriangle(TriPacketGpu& p, int lane, const ObjectGpu& ob, std::int32_t id
   p.prim[lane] = id;
 }
 
+// The motion record a moving triangle points to (its index in `objects`).
+std::size_t motionRecord(const ObjectGpu& ob, std::int32_t id) {
+  return static_cast<std::size_t>(id) + static_cast<std::size_t>(ob.flags >> OBJECT_MOTION_SHIFT);
+}
+
 }  // namespace
 
 PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
                               std::vector<TriPacketGpu>& out) {
   PacketRange range;
   range.start = static_cast<std::uint32_t>(out.size());
-  for (int pass = 0; pass < 2; ++pass) {
-    int lane = PACKET_LANES;
-    for (std::size_t i = 0; i < n; ++i) {
-      const ObjectGpu& ob = objects[ids[i]];
-      if (isPacketTriangle(ob) != (pass == 0)) continue;
+  // Static triangles four to a packet.
+  int lane = PACKET_LANES;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ObjectGpu& ob = objects[ids[i]];
+    if (!isPacketTriangle(ob)) continue;
+    if (lane == PACKET_LANES) {
+      out.push_back(emptyPacket());
+      lane = 0;
+    }
+    putTriangle(out.back(), lane++, ob, ids[i]);
+  }
+  // Moving triangles, four of one motion record to a packet.
+  std::vector<bool> placed(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ObjectGpu& first = objects[ids[i]];
+    if (placed[i] || !isMovingPacketTriangle(first) || ids[i] >= PACKET_MOVING) continue;
+    const std::size_t record = motionRecord(first, ids[i]);
+    lane = PACKET_LANES;
+    for (std::size_t j = i; j < n; ++j) {
+      const ObjectGpu& ob = objects[ids[j]];
+      if (placed[j] || !isMovingPacketTriangle(ob) || ids[j] >= PACKET_MOVING || motionRecord(ob, ids[j]) != record)
+        continue;
       if (lane == PACKET_LANES) {
         out.push_back(emptyPacket());
         lane = 0;
       }
-      if (pass == 0)
-        putTriangle(out.back(), lane, ob, ids[i]);
-      else
-        out.back().prim[lane] = -(ids[i] + 2);
-      ++lane;
+      putTriangle(out.back(), lane++, ob, ids[j] | PACKET_MOVING);
+      placed[j] = true;
     }
+  }
+  // Everything else, tested one by one.
+  lane = PACKET_LANES;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ObjectGpu& ob = objects[ids[i]];
+    if (isPacketTriangle(ob) || (isMovingPacketTriangle(ob) && ids[i] < PACKET_MOVING)) continue;
+    if (lane == PACKET_LANES) {
+      out.push_back(emptyPacket());
+      lane = 0;
+    }
+    out.back().prim[lane++] = -(ids[i] + 2);
   }
   range.count = static_cast<std::uint32_t>(out.size() - range.start);
   return range;

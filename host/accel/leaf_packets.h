@@ -25,4 +25,10 @@ PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::
 // vectorised Moller-Trumbore test.
 inline bool isPacketTriangle(const ObjectGpu& ob) { return ob.type == OBJECT_TRIANGLE && !ob.has_transform; }
 
+// A moving triangle (object space): it shares packets with the triangles of its
+// own motion record, tested with the ray moved into their object space.
+inline bool isMovingPacketTriangle(const ObjectGpu& ob) {
+  return ob.type == OBJECT_TRIANGLE && ob.has_transform == OBJECT_MOVING;
+}
+
 }  // namespace prism

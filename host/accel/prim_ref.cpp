@@ -93,13 +93,57 @@ struct Box3 {
   double lo[3], hi[3];
 };
 
-// Boxes that bound object-space box [lo, hi] in world space over the motion:
-// box i holds it for every s in [i, i + 1] / kMotionSteps. Each is the box of
-// the corners at s = i / kMotionSteps grown by how far any point of the box can
-// move before the next step (translation, stretch and rotation changes bounded
-// separately: |dT| + |dS| |x| + dphi |S x|).
+// The object-to-world transforms of a motion at s = i / kMotionSteps, kept for
+// the last record asked (a moving mesh's primitives share one, and come in a row).
 constexpr int kMotionSteps = 64;
-std::vector<Box3> motionStepBoxes(const MotionGpu& motion, const double lo[3], const double hi[3]) {
+const std::vector<Transform>& motionSteps(const MotionGpu& motion) {
+  thread_local MotionGpu cached{};
+  thread_local std::vector<Transform> steps;
+  if (steps.empty() || std::memcmp(&cached, &motion, sizeof motion) != 0) {
+    const DecomposedTransform a = decomposedEnd(motion, 0), b = decomposedEnd(motion, 1);
+    steps.resize(kMotionSteps + 1);
+    for (int i = 0; i <= kMotionSteps; ++i) steps[i] = interpolate(a, b, static_cast<double>(i) / kMotionSteps);
+    cached = motion;
+  }
+  return steps;
+}
+
+Box3 cornerBox(const Transform& t, const double lo[3], const double hi[3], double grow) {
+  Box3 box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 w = t.applyPoint({(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]});
+    const double wv[3] = {w.x, w.y, w.z};
+    for (int k = 0; k < 3; ++k) {
+      box.lo[k] = std::min(box.lo[k], wv[k] - grow);
+      box.hi[k] = std::max(box.hi[k], wv[k] + grow);
+    }
+  }
+  return box;
+}
+
+// World boxes of object-space box [lo, hi] over a motion: `swept` holds it at
+// every instant, and lerp(open, close, s) at instant s (linear bounds).
+//   Translation alone: the box at open and at close, exactly (a translated box
+//   moves linearly), and their union.
+//   Otherwise: kMotionSteps step boxes, box i the corners' box at s = i/steps
+//   grown by how far any point can move before the next step (translation,
+//   stretch and rotation bounded separately: |dT| + |dS| |x| + dphi |S x|), so
+//   box i holds the object over its step. Their union is `swept`; `open` and
+//   `close` start as the first and last, each face then pushed out by the most
+//   the straight line between them cuts into a step's box at either end of
+//   its step.
+void movingBoxes(const MotionGpu& motion, const double lo[3], const double hi[3], Box3* swept, Box3* open,
+                 Box3* close) {
+  const std::vector<Transform>& t = motionSteps(motion);
+  if (motion.kind == MOTION_TRANSLATE) {
+    *open = cornerBox(t.front(), lo, hi, 0);
+    *close = cornerBox(t.back(), lo, hi, 0);
+    for (int k = 0; k < 3; ++k) {
+      swept->lo[k] = std::min(open->lo[k], close->lo[k]);
+      swept->hi[k] = std::max(open->hi[k], close->hi[k]);
+    }
+    return;
+  }
   const DecomposedTransform a = decomposedEnd(motion, 0), b = decomposedEnd(motion, 1);
   const double dphi = rotationAngle(a, b) / kMotionSteps;
   double radius = 0;  // of the object-space box around the origin
@@ -118,24 +162,28 @@ std::vector<Box3> motionStepBoxes(const MotionGpu& motion, const double lo[3], c
   stretch_step = std::sqrt(stretch_step) / kMotionSteps;
   const double move =
       length(b.translate - a.translate) / kMotionSteps + stretch_step * radius + dphi * stretch_norm * radius;
-  std::vector<Box3> boxes(kMotionSteps);
-  for (int step = 0; step < kMotionSteps; ++step) {
-    const Transform t = interpolate(a, b, static_cast<double>(step) / kMotionSteps);
-    Box3& box = boxes[step];
-    for (int k = 0; k < 3; ++k) {
-      box.lo[k] = INFINITY;
-      box.hi[k] = -INFINITY;
-    }
-    for (int corner = 0; corner < 8; ++corner) {
-      const Vec3 w = t.applyPoint({(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]});
-      const double wv[3] = {w.x, w.y, w.z};
-      for (int k = 0; k < 3; ++k) {
-        box.lo[k] = std::min(box.lo[k], wv[k] - move);
-        box.hi[k] = std::max(box.hi[k], wv[k] + move);
+  Box3 steps[kMotionSteps];
+  for (int i = 0; i < kMotionSteps; ++i) steps[i] = cornerBox(t[i], lo, hi, move);
+  *open = steps[0];
+  *close = steps[kMotionSteps - 1];
+  *swept = steps[0];
+  for (int axis = 0; axis < 3; ++axis) {
+    double push_lo = 0, push_hi = 0;
+    const double a_lo = open->lo[axis], b_lo = close->lo[axis], a_hi = open->hi[axis], b_hi = close->hi[axis];
+    for (int i = 0; i < kMotionSteps; ++i) {
+      for (int end = 0; end < 2; ++end) {
+        const double s = static_cast<double>(i + end) / kMotionSteps;
+        push_lo = std::max(push_lo, a_lo + s * (b_lo - a_lo) - steps[i].lo[axis]);
+        push_hi = std::max(push_hi, steps[i].hi[axis] - (a_hi + s * (b_hi - a_hi)));
       }
+      swept->lo[axis] = std::min(swept->lo[axis], steps[i].lo[axis]);
+      swept->hi[axis] = std::max(swept->hi[axis], steps[i].hi[axis]);
     }
+    open->lo[axis] -= push_lo;
+    close->lo[axis] -= push_lo;
+    open->hi[axis] += push_hi;
+    close->hi[axis] += push_hi;
   }
-  return boxes;
 }
 
 // The padding for the kernels' float transform of a box this size and place.
@@ -181,12 +229,8 @@ bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
   double lo[3], hi[3];
   if (ob.type == OBJECT_PLANE || !localBounds(ob, lo, hi)) return false;
   if (ob.has_transform == OBJECT_MOVING) {
-    Box3 swept{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
-    for (const Box3& b : motionStepBoxes(motionOf(ob), lo, hi))
-      for (int a = 0; a < 3; ++a) {
-        swept.lo[a] = std::min(swept.lo[a], b.lo[a]);
-        swept.hi[a] = std::max(swept.hi[a], b.hi[a]);
-      }
+    Box3 swept, open, close;
+    movingBoxes(motionOf(ob), lo, hi, &swept, &open, &close);
     return toAabb(swept.lo, swept.hi, floatPad(swept), bounds);
   } else if (ob.has_transform) {
     // The device maps rays into object space with the float matrix; its inverse
@@ -241,28 +285,8 @@ bool objectLinearBounds(const ObjectGpu& ob, Aabb* open, Aabb* close) {
   }
   double lo[3], hi[3];
   if (!localBounds(ob, lo, hi)) return false;
-  const std::vector<Box3> steps = motionStepBoxes(motionOf(ob), lo, hi);
-  const int n = static_cast<int>(steps.size());
-  // Start from the first and last step's boxes, then move each face out by the
-  // most that the straight line between them cuts into a step's box at either
-  // end of the step's interval.
-  Box3 a = steps.front(), b = steps.back(), swept = a;
-  for (int axis = 0; axis < 3; ++axis) {
-    double push_lo = 0, push_hi = 0;
-    for (int i = 0; i < n; ++i) {
-      for (int end = 0; end < 2; ++end) {
-        const double s = static_cast<double>(i + end) / n;
-        push_lo = std::max(push_lo, a.lo[axis] + s * (b.lo[axis] - a.lo[axis]) - steps[i].lo[axis]);
-        push_hi = std::max(push_hi, steps[i].hi[axis] - (a.hi[axis] + s * (b.hi[axis] - a.hi[axis])));
-      }
-      swept.lo[axis] = std::min(swept.lo[axis], steps[i].lo[axis]);
-      swept.hi[axis] = std::max(swept.hi[axis], steps[i].hi[axis]);
-    }
-    a.lo[axis] -= push_lo;
-    b.lo[axis] -= push_lo;
-    a.hi[axis] += push_hi;
-    b.hi[axis] += push_hi;
-  }
+  Box3 swept, a, b;
+  movingBoxes(motionOf(ob), lo, hi, &swept, &a, &b);
   const double pad = floatPad(swept);
   return toAabb(a.lo, a.hi, pad, open) && toAabb(b.lo, b.hi, pad, close);
 }

@@ -101,11 +101,36 @@ PRISM_HOT int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay
   return ~reject & in_range;
 }
 
+/* The ray of a moving packet: mapped into its object's space at the ray's time
+ * (t, u and v are the same in both spaces). */
+PRISM_HOT PacketRay moving_packet_ray(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d,
+                                      __global const ObjectGpu* objects) {
+  float m[12];
+  object_world_to_object(&objects[pk->prim[0] & ~PACKET_MOVING], r->time, m);
+  return packet_ray(xform_point(m, o), xform_vector(m, d), r->time);
+}
+
+/* Whether pk is a moving packet (only scenes with moving objects have any). */
+PRISM_HOT bool packet_moves(__global const TriPacketGpu* pk) {
+#ifdef PRISM_MOTION
+  int p0 = pk->prim[0];
+  return p0 >= 0 && (p0 & PACKET_MOVING) != 0;
+#else
+  return false;
+#endif
+}
+
 PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
                               float* best, HitGpu* hit, __global const ObjectGpu* objects) {
   float4 t, u, v;
-  int4 ok = packet_intersect(pk, r, tmin, *best, 1, &t, &u, &v);
-  int4 prim = vload4(0, pk->prim);
+  int4 ok, prim = vload4(0, pk->prim);
+  if (packet_moves(pk)) {
+    PacketRay moved = moving_packet_ray(pk, r, o, d, objects);
+    ok = packet_intersect(pk, &moved, tmin, *best, 1, &t, &u, &v);
+    prim = select(prim, prim & (int4)(~PACKET_MOVING), prim >= 0); /* ids of the filled lanes */
+  } else {
+    ok = packet_intersect(pk, r, tmin, *best, 1, &t, &u, &v);
+  }
   if (any(ok)) {
     float ta[4], ua[4], va[4];
     int oka[4], pa[4];
@@ -182,8 +207,14 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
                                      float tmin, float tmax, float carried, Mailbox* mailbox,
                                      __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
   float4 t, u, v;
-  int4 ok = packet_intersect(pk, r, tmin, tmax, 0, &t, &u, &v);
-  int4 prim = vload4(0, pk->prim);
+  int4 ok, prim = vload4(0, pk->prim);
+  if (packet_moves(pk)) {
+    PacketRay moved = moving_packet_ray(pk, r, o, d, objects);
+    ok = packet_intersect(pk, &moved, tmin, tmax, 0, &t, &u, &v);
+    prim = select(prim, prim & (int4)(~PACKET_MOVING), prim >= 0); /* ids of the filled lanes */
+  } else {
+    ok = packet_intersect(pk, r, tmin, tmax, 0, &t, &u, &v);
+  }
   if (any(ok)) {
     int oka[4], pa[4];
     vstore4(ok, 0, oka);

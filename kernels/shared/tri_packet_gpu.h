@@ -7,12 +7,17 @@
  *   prim[k] >= 0: a triangle, its index in the object array (the primid);
  *   prim[k] == PACKET_EMPTY: an unused lane (zero geometry, never hit);
  *   prim[k] <= -2: object -(prim[k] + 2), a sphere, box or transformed object
- *   tested through object_intersect (its lane geometry is zero). */
+ *   tested through object_intersect (its lane geometry is zero).
+ * A moving packet (PACKET_MOVING set in prim[0]) holds triangles of one moving
+ * object in object space, lanes prim[k] = id | PACKET_MOVING (or empty): the
+ * ray is mapped once per packet by that object's world-to-object transform at
+ * its time, then meets the four at once. */
 #ifndef PRISM_TRI_PACKET_GPU_H
 #define PRISM_TRI_PACKET_GPU_H
 
 #define PACKET_EMPTY (-1)
 #define PACKET_LANES 4
+#define PACKET_MOVING 0x40000000
 
 typedef struct TriPacketGpu {
   float v0x[4], v0y[4], v0z[4];

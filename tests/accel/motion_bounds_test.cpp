@@ -9,6 +9,7 @@
 #include <random>
 
 #include "accel/prim_ref.h"
+#include "kernels/shared/motion_gpu.h"
 #include "render/gpu_scene.h"
 #include "scene/motion.h"
 #include "scene/scene_loader.h"
@@ -27,7 +28,10 @@ const char* kMovingScene = R"({
      "transform_end": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [0, 4, 0]}]},
     {"type": "triangle", "vertices": [[0, 0, 0], [3, 0, 0], [0, 1, 0]],
      "transform": {"rotate": {"axis": [0, 0, 1], "angle": -60}},
-     "transform_end": [{"rotate": {"axis": [0, 0, 1], "angle": 60}}, {"translate": [1, 0, 0]}]}
+     "transform_end": [{"rotate": {"axis": [0, 0, 1], "angle": 60}}, {"translate": [1, 0, 0]}]},
+    {"type": "sphere", "center": [0, 0, 0], "radius": 0.5,
+     "transform": [{"scale": [1, 3, 1]}, {"rotate": {"axis": [1, 0, 0], "angle": 30}}],
+     "transform_end": [{"scale": [1, 3, 1]}, {"rotate": {"axis": [1, 0, 0], "angle": 30}}, {"translate": [5, -2, 1]}]}
   ]
 })";
 
@@ -95,6 +99,9 @@ TEST_CASE("moving primitives' swept and linear bounds hold them at every instant
         REQUIRE(inside(at, w));
       }
     }
+    // A translation keeps its linear part constant (the kernels' short path).
+    const MotionGpu& motion = *reinterpret_cast<const MotionGpu*>(&gpu.objects[i] + (gpu.objects[i].flags >> OBJECT_MOTION_SHIFT));
+    CHECK((motion.kind == MOTION_TRANSLATE) == (i == 3));
     // Not vacuous: the linear bounds are tighter than the swept box at the ends.
     CHECK(open.area() < swept.area());
     CHECK(close.area() < swept.area());
