@@ -99,7 +99,7 @@ TEST_CASE("a sphere moving across the view covers each pixel for the time the in
   CHECK(std::fabs(ramp_pixels - 2 * 2 * kR * pixels_per_unit) < 6);
 }
 
-TEST_CASE("every structure finds moving objects where brute force does", "[render][distributed][motion][accel]") {
+TEST_CASE("every structure finds moving spheres, boxes, triangles and planes where brute force does", "[render][distributed][motion][accel]") {
   const char* json = R"({
     "camera": {"position": [0, 2, 9], "look_at": [0, 0.5, 0], "fov": 40, "shutter": [0, 1]},
     "film": {"width": 48, "height": 36, "spp": 4},
@@ -107,7 +107,8 @@ TEST_CASE("every structure finds moving objects where brute force does", "[rende
     "materials": {"m": {"diffuse": 0.7, "reflect": 0.3}},
     "lights": [{"position": [2, 6, 4]}],
     "objects": [
-      {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]},
+      {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
+       "transform_end": [{"rotate": {"axis": [1, 0, 0], "angle": 8}}, {"translate": [0, -0.2, 0]}]},
       {"type": "sphere", "center": [0, 0.6, 0], "radius": 0.6, "material": "m",
        "transform": {"translate": [-2, 0, 0]}, "transform_end": {"translate": [1, 0, 1]}},
       {"type": "box", "min": [-0.4, -0.4, -0.4], "max": [0.4, 0.4, 0.4], "material": "m",
