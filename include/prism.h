@@ -291,6 +291,7 @@ typedef struct PrismRenderOptions {
   uint32_t first_hit;  /* a PrismFirstHit */
   float aa_threshold;  /* adaptive: corner colours differing by more than this split a square (default 0.1) */
   uint32_t aa_max_level; /* adaptive: most subdivisions of a pixel's side, 0..8 (default 2) */
+  uint32_t profile;    /* nonzero: time each kernel on the device (prismGetKernelTime); 0 by default */
 } PrismRenderOptions;
 
 /* Fills `options` with the scene's own settings (film and render blocks). */
@@ -310,7 +311,17 @@ typedef struct PrismRenderStats {
   double accel_build_seconds;  /* building the spatial index on the host */
   double rays_per_pixel;       /* primary samples / pixels (about 2 for quincunx, >= 1 for adaptive) */
   uint32_t first_hit_used;     /* PRISM_FIRST_HIT_ZBUFFER or PRISM_FIRST_HIT_TRACE */
+  double setup_seconds;        /* of `seconds`, before the first sample: scene, structure, kernels, uploads */
+  double trace_seconds;        /* the rest: tracing, accumulation, resolve, read-back */
 } PrismRenderStats;
+
+/* After a render with options->profile set: how many kernels ran, and kernel
+ * `index`'s name (owned by the context, valid until its next render), its device
+ * time summed over its launches, and the number of launches (longest first).
+ * PRISM_ERROR_INVALID_OPERATION before such a render. */
+PRISM_API PrismStatus prismGetKernelTimeCount(PrismContext context, uint32_t* count);
+PRISM_API PrismStatus prismGetKernelTime(PrismContext context, uint32_t index, const char** name, double* seconds,
+                                         uint64_t* launches);
 
 /* Renders `scene` with `options` (NULL: the scene's own) into `rgba`, a caller-owned
  * buffer of width*height*4 floats, rows top to bottom, linear colour, alpha 1 on a hit

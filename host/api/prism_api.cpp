@@ -80,6 +80,7 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   r.first_hit = parseFirstHitMode(first_hit);
   r.aa_threshold = o.aa_threshold;
   r.aa_max_level = static_cast<int>(std::min<uint32_t>(o.aa_max_level, std::numeric_limits<int>::max()));
+  r.profile = o.profile != 0;
   return r;
 }
 
@@ -268,9 +269,33 @@ PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const 
       stats->accel_build_seconds = r.stats.accel_stats.build_seconds;
       stats->rays_per_pixel = r.stats.rays_per_pixel;
       stats->first_hit_used = toC(r.stats.first_hit);
+      stats->setup_seconds = r.stats.setup_seconds;
+      stats->trace_seconds = r.stats.seconds - r.stats.setup_seconds;
     }
     return PRISM_OK;
   });
+}
+
+PRISM_API PrismStatus prismGetKernelTimeCount(PrismContext context, uint32_t* count) {
+  PRISM_REQUIRE(context && count, "prismGetKernelTimeCount: NULL argument");
+  if (!context->has_render || context->last.stats.kernels.empty())
+    return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetKernelTimeCount: no profiled render yet (set PrismRenderOptions.profile)");
+  *count = static_cast<uint32_t>(context->last.stats.kernels.size());
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetKernelTime(PrismContext context, uint32_t index, const char** name, double* seconds,
+                                         uint64_t* launches) {
+  PRISM_REQUIRE(context && name && seconds && launches, "prismGetKernelTime: NULL argument");
+  if (!context->has_render || context->last.stats.kernels.empty())
+    return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetKernelTime: no profiled render yet (set PrismRenderOptions.profile)");
+  const std::vector<KernelTime>& kernels = context->last.stats.kernels;
+  PRISM_REQUIRE(index < kernels.size(), "prismGetKernelTime: index " + std::to_string(index) + " is not below the " +
+                                            std::to_string(kernels.size()) + " kernels timed");
+  *name = kernels[index].name.c_str();
+  *seconds = kernels[index].seconds;
+  *launches = kernels[index].launches;
+  return PRISM_OK;
 }
 
 PRISM_API PrismStatus prismGetAovChannels(PrismAov aov, uint32_t* channels) {

@@ -143,6 +143,8 @@ Device:
                     cache (see PRISM_CACHE_DIR in 'prism --help')
 
 Messages:
+  --stats           after the summary, where the render's time went: set-up (kernels,
+                    structure) and tracing, and each kernel's device time (profiled)
   --quiet           no progress bar and no summary line (warnings and errors still
                     go to stderr)
   -h, --help        this help

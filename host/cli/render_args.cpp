@@ -15,7 +15,7 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--no-cache", "", false}, {"--quiet", "", false},    {"--help", "-h", false},
     {"--accel", "", true},     {"--camera-pos", "", true}, {"--camera-look", "", true},
     {"--camera-up", "", true}, {"--fov", "", true},    {"--aperture", "", true},
-    {"--focus-distance", "", true},
+    {"--focus-distance", "", true}, {"--stats", "", false},
     {"--aa", "", true},        {"--filter", "", true},    {"--aa-threshold", "", true},
     {"--aa-max-level", "", true}, {"--first-hit", "", true},
 };
@@ -115,6 +115,7 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
   request.device = parsed.text("--device").value_or("");
   request.use_kernel_cache = !parsed.has("--no-cache");
   request.quiet = parsed.has("--quiet");
+  request.stats = parsed.has("--stats");
 
   if (const auto aov_name = parsed.text("--aov")) {
     PrismAov aov;

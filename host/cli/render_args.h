@@ -33,6 +33,7 @@ struct RenderRequest {
   std::optional<float> aperture, focus_distance;  // depth of field: lens radius, plane in focus
   bool use_kernel_cache = true;
   bool quiet = false;
+  bool stats = false;  // --stats: where the render's time went
 };
 
 // Throws UsageError naming the option at fault.

@@ -55,6 +55,7 @@ void applyOverrides(const RenderRequest& request, PrismRenderOptions& options) {
   if (request.aa_threshold) options.aa_threshold = *request.aa_threshold;
   if (request.aa_max_level) options.aa_max_level = *request.aa_max_level;
   if (request.first_hit) options.first_hit = *request.first_hit;
+  if (request.stats) options.profile = 1;
 }
 
 // The sampling in words for the summary: "jitter, box filter", "quincunx (tent)", "adaptive".
@@ -144,19 +145,48 @@ int writeOutput(const RenderRequest& request, PrismContext context, const PrismR
 void printSummary(const RenderRequest& request, const PrismRenderOptions& options, const PrismDeviceInfo& device,
                   const PrismRenderStats& stats) {
   const uint64_t total = stats.primary_rays + stats.reflected_rays + stats.refracted_rays + stats.shadow_rays;
-  const double mrays = stats.seconds > 0.0 ? static_cast<double>(total) / stats.seconds / 1e6 : 0.0;
+  // Throughput over tracing alone: set-up (kernels built on a cold start, the
+  // structure, uploads) is reported apart from it.
+  const double mrays = stats.trace_seconds > 0.0 ? static_cast<double>(total) / stats.trace_seconds / 1e6 : 0.0;
   const char* accel = prismAccelName(static_cast<PrismAccel>(stats.accel));
   const char* first_hit = prismFirstHitName(static_cast<PrismFirstHit>(stats.first_hit_used));
   std::printf(
       "prism: rendered %ux%u at %u spp on '%s' with %s (built in %.2f s) in %.2f s (kernels %.2f s): "
-      "%s, %.3f rays/pixel, first hit by %s; "
+      "%s, %.3f rays/pixel, first hit by %s, set-up %.2f s, tracing %.2f s; "
       "%llu primary, %llu reflected, %llu refracted, %llu shadow rays, %.2f Mrays/s -> %s\n",
       static_cast<unsigned>(options.width), static_cast<unsigned>(options.height),
       static_cast<unsigned>(options.spp), device.name, accel ? accel : "?", stats.accel_build_seconds,
       stats.seconds, stats.kernel_build_seconds, samplingText(options).c_str(), stats.rays_per_pixel,
-      first_hit ? first_hit : "?", static_cast<unsigned long long>(stats.primary_rays),
+      first_hit ? first_hit : "?", stats.setup_seconds, stats.trace_seconds,
+      static_cast<unsigned long long>(stats.primary_rays),
       static_cast<unsigned long long>(stats.reflected_rays), static_cast<unsigned long long>(stats.refracted_rays),
       static_cast<unsigned long long>(stats.shadow_rays), mrays, request.output_path.c_str());
+}
+
+// --stats: the render's time by stage, each kernel's device time from its
+// profiling events, and what is left (host work, waits, transfers).
+void printStageTimes(PrismContext context, const PrismRenderStats& stats) {
+  std::printf("prism: stages: set-up %.3f s (kernels built or loaded %.3f s, %s built %.3f s), tracing %.3f s\n",
+              stats.setup_seconds, stats.kernel_build_seconds,
+              prismAccelName(static_cast<PrismAccel>(stats.accel)) ? prismAccelName(static_cast<PrismAccel>(stats.accel))
+                                                                   : "structure",
+              stats.accel_build_seconds, stats.trace_seconds);
+  uint32_t count = 0;
+  if (prismGetKernelTimeCount(context, &count) != PRISM_OK) return;
+  std::printf("  %-16s %10s %12s %10s\n", "kernel", "launches", "device s", "of tracing");
+  double device = 0;
+  for (uint32_t i = 0; i < count; ++i) {
+    const char* name = nullptr;
+    double seconds = 0;
+    uint64_t launches = 0;
+    if (prismGetKernelTime(context, i, &name, &seconds, &launches) != PRISM_OK) return;
+    device += seconds;
+    std::printf("  %-16s %10llu %12.4f %9.1f%%\n", name, static_cast<unsigned long long>(launches), seconds,
+                stats.trace_seconds > 0 ? 100.0 * seconds / stats.trace_seconds : 0.0);
+  }
+  const double rest = std::max(0.0, stats.trace_seconds - device);
+  std::printf("  %-16s %10s %12.4f %9.1f%%  (host work, waits and transfers)\n", "other", "", rest,
+              stats.trace_seconds > 0 ? 100.0 * rest / stats.trace_seconds : 0.0);
 }
 
 }  // namespace
@@ -224,6 +254,7 @@ int runRender(const std::vector<std::string>& args) {
   const int written = writeOutput(request, context.get(), options, rgba);
   if (written != kExitOk) return written;
   if (!request.quiet) printSummary(request, options, device, stats);
+  if (request.stats) printStageTimes(context.get(), stats);
   return kExitOk;
 }
 

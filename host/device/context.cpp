@@ -95,8 +95,11 @@ void KernelLaunch::run(size_t count) {
   if (multiple > 1 && multiple <= local) local -= local % multiple;
   local = std::max<size_t>(local, 1);
   size_t global = (count + local - 1) / local * local;
-  PRISM_CL_CHECK(
-      clEnqueueNDRangeKernel(m_context.queue(), m_kernel, 1, nullptr, &global, &local, 0, nullptr, nullptr));
+  KernelProfile& profile = m_context.profile();
+  cl_event event = nullptr;
+  PRISM_CL_CHECK(clEnqueueNDRangeKernel(m_context.queue(), m_kernel, 1, nullptr, &global, &local, 0, nullptr,
+                                        profile.enabled() ? &event : nullptr));
+  if (event) profile.record(m_kernel, event);
 }
 
 // ---- Context -------------------------------------------------------------------
@@ -107,7 +110,8 @@ Context::Context(const DeviceDescription& device, bool use_disk_cache)
   cl_context_properties props[] = {CL_CONTEXT_PLATFORM, reinterpret_cast<cl_context_properties>(device.platform), 0};
   m_context = clCreateContext(props, 1, &device.device, nullptr, nullptr, &status);
   if (status != CL_SUCCESS) throwClError(status, "clCreateContext", __FILE__, __LINE__);
-  m_queue = clCreateCommandQueue(m_context, device.device, 0, &status);
+  // Profiling costs nothing until a render asks for it (KernelProfile).
+  m_queue = clCreateCommandQueue(m_context, device.device, CL_QUEUE_PROFILING_ENABLE, &status);
   if (status != CL_SUCCESS) {
     clReleaseContext(m_context);
     throwClError(status, "clCreateCommandQueue", __FILE__, __LINE__);
@@ -115,6 +119,7 @@ Context::Context(const DeviceDescription& device, bool use_disk_cache)
 }
 
 Context::~Context() {
+  m_profile.discard();  // its events hold the queue
   for (auto& [key, p] : m_programs) {
     for (auto& [name, k] : p.kernels) clReleaseKernel(k);
     clReleaseProgram(p.program);

@@ -15,6 +15,7 @@
 
 #include "device/cl_error.h"
 #include "device/device_list.h"
+#include "device/kernel_profile.h"
 #include "device/program_cache.h"
 
 namespace prism {
@@ -104,6 +105,9 @@ class Context {
   // Seconds spent building or loading programs since the last call.
   double takeBuildSeconds();
 
+  // Device times of the launches made while it is started.
+  KernelProfile& profile() { return m_profile; }
+
  private:
   struct Program {
     cl_program program = nullptr;
@@ -120,6 +124,7 @@ class Context {
   std::map<std::string, Program> m_programs;  // key: name + options
   std::mutex m_mutex;
   double m_build_seconds = 0;
+  KernelProfile m_profile;
 };
 
 }  // namespace prism

@@ -35,6 +35,9 @@ struct RenderOptions {
   double aa_threshold = 0.1;            // adaptive: corner contrast that splits a square
   int aa_max_level = 2;                 // adaptive: most splits of a pixel's side
   FirstHitMode first_hit = FirstHitMode::Auto;
+  // Time every kernel launch on the device (RenderStats::kernels); each launch
+  // then keeps an event until the render ends.
+  bool profile = false;
 
   static RenderOptions fromScene(const Scene& scene);
   // The anti-aliasing mode in effect: `aa`, or by default none at one sample per

@@ -101,9 +101,11 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
     m_shadow_slots += l.samples;
     m_area_lights = m_area_lights || l.type != LIGHT_POINT;
   }
+  if (options.profile) m_context.profile().start();
   struct Reset {
     Renderer* r;
     ~Reset() {
+      r->m_context.profile().discard();  // what a finished render did not take
       r->m_scene = nullptr;
       r->m_options = nullptr;
       r->m_stats = nullptr;
@@ -157,6 +159,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_chunk_xy.reserve(m_context, kSliceRays * 2 * sizeof(float));
   m_chunk_aov.reserve(m_context, kSliceRays * sizeof(std::int32_t));
 
+  result.stats.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (sampling.mode == AaMode::Adaptive)
     renderAdaptive(sampling, result, progress);
   else
@@ -172,6 +175,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_film = Buffer();
   m_sample_xy = Buffer();
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.profile) result.stats.kernels = m_context.profile().stop();
   return result;
 }
 

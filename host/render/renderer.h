@@ -15,6 +15,7 @@
 #include "accel/accel_buffers.h"
 #include "accel/accel_structure.h"
 #include "device/context.h"
+#include "device/kernel_profile.h"
 #include "render/firsthit.h"
 #include "render/gpu_scene.h"
 #include "render/render_options.h"
@@ -36,6 +37,10 @@ struct RenderStats {
   FirstHitMode first_hit = FirstHitMode::Trace;  // how wave 0 found its hits: ZBuffer or Trace
   double rays_per_pixel = 0;         // primary samples / pixels
   int film_batches = 0;              // adaptive: trips of sample colours from the device film to the host
+  // Set-up before the first sample: flattening the scene, building the structure,
+  // building (or loading) kernels, uploads. The rest of `seconds` is tracing.
+  double setup_seconds = 0;
+  std::vector<KernelTime> kernels;   // with RenderOptions::profile: device time per kernel, longest first
 
   std::uint64_t totalRays() const { return rays_by_kind[0] + rays_by_kind[1] + rays_by_kind[2] + rays_by_kind[3]; }
 };

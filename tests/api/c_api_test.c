@@ -238,6 +238,39 @@ int main(int argc, char** argv) {
     free(lit);
   }
 
+  /* Profiling: each kernel's device time, and set-up plus tracing make the render. */
+  {
+    PrismRenderOptions profiled = opts;
+    uint32_t count = 0, k;
+    double device = 0;
+    PrismRenderStats st;
+    memset(&st, 0, sizeof st);
+    st.struct_size = sizeof st;
+    profiled.profile = 0;
+    CHECK_OK(prismRender(ctx, scene, &profiled, rgba, &st));
+    CHECK(prismGetKernelTimeCount(ctx, &count) == PRISM_ERROR_INVALID_OPERATION);
+    profiled.profile = 1;
+    CHECK_OK(prismRender(ctx, scene, &profiled, rgba, &st));
+    CHECK(fabs(st.setup_seconds + st.trace_seconds - st.seconds) < 1e-9 && st.trace_seconds > 0);
+    CHECK_OK(prismGetKernelTimeCount(ctx, &count));
+    CHECK(count >= 3); /* at least shade, accumulate and resolve ran */
+    for (k = 0; k < count; ++k) {
+      const char* name = NULL;
+      double seconds = -1;
+      uint64_t launches = 0;
+      CHECK_OK(prismGetKernelTime(ctx, k, &name, &seconds, &launches));
+      CHECK(name && name[0] && seconds >= 0 && launches > 0);
+      device += seconds;
+    }
+    CHECK(device <= st.seconds); /* the device's share cannot exceed the wall time */
+    {
+      const char* name = NULL;
+      double seconds = 0;
+      uint64_t launches = 0;
+      CHECK(prismGetKernelTime(ctx, count, &name, &seconds, &launches) == PRISM_ERROR_INVALID_ARGUMENT);
+    }
+  }
+
   /* A progress callback that returns nonzero cancels the render. */
   {
     int calls = 0;

@@ -53,13 +53,20 @@ run_prism(render "${scene}" -o "${WORK_DIR}/quincunx.png" ${size} --aa quincunx)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "quincunx render exited ${rc}:\n${out}${err}")
 endif()
-if(NOT out MATCHES "aa quincunx \\(tent\\), 2\\.044 rays/pixel, first hit by zbuffer; 4709 primary, ")
+if(NOT out MATCHES "aa quincunx \\(tent\\), 2\\.044 rays/pixel, first hit by zbuffer, set-up [0-9.]+ s, tracing [0-9.]+ s; 4709 primary, ")
   message(FATAL_ERROR "unexpected quincunx summary line:\n${out}")
 endif()
 expect_magic("${WORK_DIR}/quincunx.png" "89504e470d0a1a0a")
 run_prism(render "${scene}" -o "${WORK_DIR}/jitter.png" ${size} --spp 4 --filter mitchell --first-hit trace)
-if(NOT rc EQUAL 0 OR NOT out MATCHES "aa jitter, mitchell filter, 4\\.000 rays/pixel, first hit by trace; 9216 primary, ")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "aa jitter, mitchell filter, 4\\.000 rays/pixel, first hit by trace, set-up [0-9.]+ s, tracing [0-9.]+ s; 9216 primary, ")
   message(FATAL_ERROR "jitter render exited ${rc} with an unexpected summary line:\n${out}${err}")
+endif()
+
+# --stats: the stages, then one row per kernel that ran (shade always does) and the rest.
+run_prism(render "${scene}" -o "${WORK_DIR}/stats.png" ${size} --stats)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "prism: stages: set-up [0-9.]+ s \\(kernels built or loaded [0-9.]+ s, (bvh|octree|bsp|none) built [0-9.]+ s\\), tracing [0-9.]+ s"
+   OR NOT out MATCHES "\n  shade +[0-9]+ +[0-9.]+ +[0-9.]+%" OR NOT out MATCHES "\n  other +[0-9.]+ +[0-9.]+%")
+  message(FATAL_ERROR "--stats exited ${rc} or printed no stage table:\n${out}${err}")
 endif()
 
 run_prism(render "${scene}" -o "${WORK_DIR}/depth.png" ${size} --aov depth --quiet)
