@@ -51,7 +51,7 @@ inline float2 lobe_sample(uint seed, int strata, RayGpu ray, int lobe) {
 
 __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count,
                     __global const ObjectGpu* objects, __global const MaterialGpu* materials,
-                    __global const LightGpu* lights, int light_count, int area_lights, float4 ambient,
+                    __global const LightGpu* lights, int light_count, float4 ambient,
                     float4 background, int max_depth, float min_weight, uint seed, int strata,
                     __global ContributionGpu* emit, __global RayGpu* children, __global SurfaceGpu* surfaces,
                     __global float* aov_depth, __global float* aov_normal, __global int* aov_primid,
@@ -71,7 +71,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
 
   /* An area light in front of the hit (or of nothing) is what the ray sees. */
 #ifdef PRISM_AREA_LIGHTS /* built for scenes with area lights (host: kernelFeatures) */
-  if (area_lights) {
+  {
     float t_light = hit.prim < 0 ? PRISM_INF : hit.t;
     int seen = -1;
     for (int l = 0; l < light_count; ++l) {

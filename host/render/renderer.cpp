@@ -33,7 +33,8 @@ std::string gib(double bytes) {
 // them with #ifdef).
 struct KernelFeatures {
   std::string camera;   // generate: a lens or a shutter interval
-  std::string shading;  // shade, spawn_shadows: moving objects, area lights, lobes
+  std::string shading;  // shade: moving objects, area lights, lobes
+  std::string shadows;  // spawn_shadows: area lights
 };
 
 KernelFeatures kernelFeatures(const Scene& scene, const GpuScene& gpu) {
@@ -45,6 +46,7 @@ KernelFeatures kernelFeatures(const Scene& scene, const GpuScene& gpu) {
   for (const MaterialGpu& m : gpu.materials) lobes = lobes || m.gloss > 0 || m.translucency > 0;
   if (area) f.shading += " -DPRISM_AREA_LIGHTS";
   if (lobes) f.shading += " -DPRISM_LOBES";
+  if (area) f.shadows = "-DPRISM_AREA_LIGHTS";
   return f;
 }
 
@@ -81,7 +83,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   const KernelFeatures features = kernelFeatures(scene, gpu);
   m_generate = m_context.kernel("generate.cl", "generate", features.camera);
   m_shade = m_context.kernel("shade.cl", "shade", features.shading);
-  m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shading);
+  m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shadows);
   RenderResult result;
   result.width = options.width;
   result.height = options.height;
@@ -96,11 +98,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_strata = sampling.mode == AaMode::Random ? 0 : sampling.spp;
   m_group_base = 0;
   m_shadow_slots = 0;
-  m_area_lights = false;
-  for (const LightGpu& l : gpu.lights) {
-    m_shadow_slots += l.samples;
-    m_area_lights = m_area_lights || l.type != LIGHT_POINT;
-  }
+  for (const LightGpu& l : gpu.lights) m_shadow_slots += l.samples;
   if (options.profile) m_context.profile().start();
   struct Reset {
     Renderer* r;
@@ -346,7 +344,6 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
       .arg(m_materials)
       .arg(m_lights)
       .arg(light_count)
-      .arg(static_cast<cl_int>(m_area_lights ? 1 : 0))
       .arg(ambient)
       .arg(background)
       .arg(opt.max_depth)

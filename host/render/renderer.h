@@ -139,7 +139,6 @@ class Renderer {
   int m_strata = 1;        // samples that share strata in the sampler (0: independent, aa random)
   long long m_group_base = 0;  // adaptive: the batch's first position, so strata groups stay distinct
   int m_shadow_slots = 0;  // shadow feelers per shaded point: the lights' samples summed
-  bool m_area_lights = false;
   size_t m_film_batch_slices = 256;
   AccelBuildOptions m_accel_build;
   AccelBuffers m_accel;
