@@ -181,20 +181,12 @@ struct MotionBoxes {
   std::vector<Aabb> open, close;
 };
 
-// The primitives' linear bounds, in PrimitiveSet order.
-MotionBoxes primitiveMotionBoxes(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims) {
-  MotionBoxes m;
-  m.open.resize(prims.bounded.size());
-  m.close.resize(prims.bounded.size());
-  for (std::size_t i = 0; i < prims.bounded.size(); ++i)
-    if (!objectLinearBounds(objects[prims.bounded[i]], &m.open[i], &m.close[i])) m.open[i] = m.close[i] = prims.bounds[i];
-  return m;
-}
-
-// The nodes' linear bounds from the primitives' (`prim`, PrimitiveSet order).
-MotionBoxes nodeMotionBoxes(const MotionBoxes& prim, const std::vector<Node2>& nodes, const std::vector<PrimRef>& refs) {
-  const std::vector<Aabb>& prim_open = prim.open;
-  const std::vector<Aabb>& prim_close = prim.close;
+// The nodes' linear bounds from the primitives' (PrimitiveSet::bounds_open and
+// bounds_close).
+MotionBoxes nodeMotionBoxes(const PrimitiveSet& prims, const std::vector<Node2>& nodes,
+                            const std::vector<PrimRef>& refs) {
+  const std::vector<Aabb>& prim_open = prims.bounds_open;
+  const std::vector<Aabb>& prim_close = prims.bounds_close;
   MotionBoxes m;
   m.open.resize(nodes.size());
   m.close.resize(nodes.size());
@@ -265,35 +257,42 @@ class WideFlattener {
   }
 
  private:
-  // An empty slot of a motion node is inverted by +-FLT_MAX, not +-inf: the
-  // kernel's lerp of inf and inf would be NaN, which fmin/fmax then ignore.
-  static BvhMotionBoundsGpu emptyBounds() {
-    BvhMotionBoundsGpu b{};
-    for (int i = 0; i < BVH_WIDTH; ++i) {
-      b.lo_x[i] = b.lo_y[i] = b.lo_z[i] = FLT_MAX;
-      b.hi_x[i] = b.hi_y[i] = b.hi_z[i] = -FLT_MAX;
-    }
-    return b;
+  // BvhNodeGpu and BvhMotionBoundsGpu share their six slabs of child boxes.
+  template <typename Slabs>
+  static void putBox(Slabs& n, int slot, const Aabb& box) {
+    n.lo_x[slot] = box.lo[0];
+    n.lo_y[slot] = box.lo[1];
+    n.lo_z[slot] = box.lo[2];
+    n.hi_x[slot] = box.hi[0];
+    n.hi_y[slot] = box.hi[1];
+    n.hi_z[slot] = box.hi[2];
   }
 
+  // Every slot an inverted box, lo = big and hi = -big, that no ray meets.
+  template <typename Slabs>
+  static void invertSlots(Slabs& n, float big) {
+    Aabb inverted;
+    for (int a = 0; a < 3; ++a) {
+      inverted.lo[a] = big;
+      inverted.hi[a] = -big;
+    }
+    for (int i = 0; i < BVH_WIDTH; ++i) putBox(n, i, inverted);
+  }
+
+  // An empty slot of a motion node is inverted by +-FLT_MAX, not +-inf: the
+  // kernel's lerp of inf and inf would be NaN, which fmin/fmax then ignore.
   void pushNode() {
     m_wide.push_back(emptyNode());
     if (!m_motion) return;
-    BvhNodeGpu& n = m_wide.back();
-    for (int i = 0; i < BVH_WIDTH; ++i) {
-      n.lo_x[i] = n.lo_y[i] = n.lo_z[i] = FLT_MAX;
-      n.hi_x[i] = n.hi_y[i] = n.hi_z[i] = -FLT_MAX;
-    }
-    m_close.push_back(emptyBounds());
+    invertSlots(m_wide.back(), FLT_MAX);
+    m_close.emplace_back();
+    invertSlots(m_close.back(), FLT_MAX);
   }
 
   static BvhNodeGpu emptyNode() {
     BvhNodeGpu n{};
-    for (int i = 0; i < BVH_WIDTH; ++i) {
-      n.lo_x[i] = n.lo_y[i] = n.lo_z[i] = INFINITY;
-      n.hi_x[i] = n.hi_y[i] = n.hi_z[i] = -INFINITY;
-      n.child[i] = 0;
-    }
+    invertSlots(n, INFINITY);
+    for (int i = 0; i < BVH_WIDTH; ++i) n.child[i] = 0;
     return n;
   }
 
@@ -314,25 +313,9 @@ class WideFlattener {
     } else {
       code = flatten(node2, depth, stack);
     }
-    BvhNodeGpu& n = m_wide[wide];
-    const Aabb& open = m_motion ? m_motion->open[node2] : c.box;
-    n.lo_x[slot] = open.lo[0];
-    n.lo_y[slot] = open.lo[1];
-    n.lo_z[slot] = open.lo[2];
-    n.hi_x[slot] = open.hi[0];
-    n.hi_y[slot] = open.hi[1];
-    n.hi_z[slot] = open.hi[2];
-    n.child[slot] = code;
-    if (m_motion) {
-      const Aabb& close = m_motion->close[node2];
-      BvhMotionBoundsGpu& b = m_close[wide];
-      b.lo_x[slot] = close.lo[0];
-      b.lo_y[slot] = close.lo[1];
-      b.lo_z[slot] = close.lo[2];
-      b.hi_x[slot] = close.hi[0];
-      b.hi_y[slot] = close.hi[1];
-      b.hi_z[slot] = close.hi[2];
-    }
+    putBox(m_wide[wide], slot, m_motion ? m_motion->open[node2] : c.box);
+    m_wide[wide].child[slot] = code;
+    if (m_motion) putBox(m_close[wide], slot, m_motion->close[node2]);
   }
 
   int flatten(int node2, int depth, int stack) {
@@ -384,15 +367,13 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
   // each node keeps its children's boxes at open and close, which a ray
   // interpolates to its time; without, it is built over the swept boxes.
   const bool linear = prims.moving && options.bvh_linear_bounds && !prims.bounded.empty();
-  MotionBoxes prim_motion;
-  if (linear) prim_motion = primitiveMotionBoxes(objects, prims);
   std::vector<PrimRef> refs(prims.bounded.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
     Aabb b = prims.bounds[i];
     if (linear)
       for (int a = 0; a < 3; ++a) {
-        b.lo[a] = 0.5f * prim_motion.open[i].lo[a] + 0.5f * prim_motion.close[i].lo[a];
-        b.hi[a] = 0.5f * prim_motion.open[i].hi[a] + 0.5f * prim_motion.close[i].hi[a];
+        b.lo[a] = 0.5f * prims.bounds_open[i].lo[a] + 0.5f * prims.bounds_close[i].lo[a];
+        b.hi[a] = 0.5f * prims.bounds_open[i].hi[a] + 0.5f * prims.bounds_close[i].hi[a];
       }
     refs[i] = PrimRef{{b.lo[0], b.lo[1], b.lo[2]}, prims.bounded[i], {b.hi[0], b.hi[1], b.hi[2]},
                       static_cast<std::int32_t>(i)};
@@ -403,7 +384,7 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
   MotionBoxes motion;
   const bool moving = linear && !nodes.empty();
   if (moving) {
-    motion = nodeMotionBoxes(prim_motion, nodes, refs);
+    motion = nodeMotionBoxes(prims, nodes, refs);
     out.nodes[0].v[3] = prims.shutter_open;
     out.nodes[1].v[3] = prims.shutter_close;
   }

@@ -211,6 +211,9 @@ const MotionGpu& motionOf(const ObjectGpu& ob) {
   return *reinterpret_cast<const MotionGpu*>(&ob + (ob.flags >> OBJECT_MOTION_SHIFT));
 }
 
+// A moving object's swept box and linear bounds (any of them may be null).
+bool movingBounds(const ObjectGpu& ob, Aabb* swept, Aabb* open, Aabb* close);
+
 }  // namespace
 
 float roundDown(double x) {
@@ -229,9 +232,7 @@ bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
   double lo[3], hi[3];
   if (ob.type == OBJECT_PLANE || !localBounds(ob, lo, hi)) return false;
   if (ob.has_transform == OBJECT_MOVING) {
-    Box3 swept, open, close;
-    movingBoxes(motionOf(ob), lo, hi, &swept, &open, &close);
-    return toAabb(swept.lo, swept.hi, floatPad(swept), bounds);
+    return movingBounds(ob, bounds, nullptr, nullptr);
   } else if (ob.has_transform) {
     // The device maps rays into object space with the float matrix; its inverse
     // in double, padded, bounds the shape that matrix describes.
@@ -277,18 +278,25 @@ bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
   return true;
 }
 
-bool objectLinearBounds(const ObjectGpu& ob, Aabb* open, Aabb* close) {
-  if (ob.has_transform != OBJECT_MOVING) {
-    if (!objectBounds(ob, open)) return false;
-    *close = *open;
-    return true;
-  }
+namespace {
+
+bool movingBounds(const ObjectGpu& ob, Aabb* swept, Aabb* open, Aabb* close) {
   double lo[3], hi[3];
   if (!localBounds(ob, lo, hi)) return false;
-  Box3 swept, a, b;
-  movingBoxes(motionOf(ob), lo, hi, &swept, &a, &b);
-  const double pad = floatPad(swept);
-  return toAabb(a.lo, a.hi, pad, open) && toAabb(b.lo, b.hi, pad, close);
+  Box3 s, a, b;
+  movingBoxes(motionOf(ob), lo, hi, &s, &a, &b);
+  const double pad = floatPad(s);  // the same pad at every instant
+  return (!swept || toAabb(s.lo, s.hi, pad, swept)) && (!open || toAabb(a.lo, a.hi, pad, open)) &&
+         (!close || toAabb(b.lo, b.hi, pad, close));
+}
+
+}  // namespace
+
+bool objectLinearBounds(const ObjectGpu& ob, Aabb* open, Aabb* close) {
+  if (ob.has_transform == OBJECT_MOVING) return movingBounds(ob, nullptr, open, close);
+  if (!objectBounds(ob, open)) return false;
+  *close = *open;
+  return true;
 }
 
 PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
@@ -297,15 +305,23 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
   set.bounds.reserve(objects.size());
   for (std::size_t i = 0; i < objects.size(); ++i) {
     if (objects[i].type == OBJECT_MOTION) continue;  // a moving object's record, not a primitive
-    Aabb b;
-    if (objectBounds(objects[i], &b)) {
+    const ObjectGpu& ob = objects[i];
+    const bool moves = ob.has_transform == OBJECT_MOVING;
+    Aabb b, open, close;
+    if (moves ? movingBounds(ob, &b, &open, &close) : objectBounds(ob, &b)) {
+      if (moves && !set.moving) {  // the first moving one: the static ones so far keep one box
+        set.moving = true;
+        set.shutter_open = motionOf(ob).shutter_open;
+        set.shutter_close = motionOf(ob).shutter_close;
+        set.bounds_open = set.bounds;
+        set.bounds_close = set.bounds;
+      }
       set.bounded.push_back(static_cast<std::int32_t>(i));
       set.bounds.push_back(b);
       set.scene.extend(b);
-      if (objects[i].has_transform == OBJECT_MOVING && !set.moving) {
-        set.moving = true;
-        set.shutter_open = motionOf(objects[i]).shutter_open;
-        set.shutter_close = motionOf(objects[i]).shutter_close;
+      if (set.moving) {
+        set.bounds_open.push_back(moves ? open : b);
+        set.bounds_close.push_back(moves ? close : b);
       }
     } else {
       set.unbounded.push_back(static_cast<std::int32_t>(i));

@@ -67,9 +67,11 @@ struct PrimitiveSet {
   std::vector<Aabb> bounds;           // bounds[i] is the box of object bounded[i] (over its whole motion)
   std::vector<std::int32_t> unbounded;
   Aabb scene;  // union of `bounds`
-  // Whether some bounded primitive moves, and the shutter its motion spans.
+  // Whether some bounded primitive moves, the shutter its motion spans, and
+  // then the linear bounds of every bounded primitive (objectLinearBounds).
   bool moving = false;
   float shutter_open = 0, shutter_close = 0;
+  std::vector<Aabb> bounds_open, bounds_close;
 };
 
 PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects);

@@ -13,6 +13,8 @@
 namespace prism {
 namespace {
 
+constexpr double pi = 3.14159265358979323846;
+
 void put3(float* dst, const Vec3& v) {
   dst[0] = static_cast<float>(v.x);
   dst[1] = static_cast<float>(v.y);
@@ -160,7 +162,6 @@ void diskAxes(const Vec3& n, double radius, Vec3& a, Vec3& b) {
 LightGpu flattenLight(const Light& l, int spp) {
   LightGpu g{};
   g.type = static_cast<int>(l.type);
-  const double pi = 3.14159265358979323846;
   double area = 0;
   switch (l.type) {
     case LightType::Point:
@@ -202,7 +203,6 @@ CameraBasis cameraBasis(const Camera& camera, int width, int height) {
   b.forward = normalize(camera.look_at - camera.position);
   Vec3 right = normalize(cross(b.forward, camera.up));
   Vec3 up = cross(right, b.forward);
-  const double pi = 3.14159265358979323846;
   double tan_half = std::tan(camera.fov * pi / 360.0);
   double aspect = static_cast<double>(width) / height;
   b.right = right * (tan_half * aspect);
@@ -266,7 +266,6 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   put4(g.camera.look_at, c.look_at);
   put4(g.camera.origin_end, c.moving ? c.position_end : c.position);
   put4(g.camera.look_at_end, c.moving ? c.look_at_end : c.look_at);
-  const double pi = 3.14159265358979323846;
   put4(g.camera.world_up, c.up, std::tan(c.fov * pi / 360.0));
   return g;
 }

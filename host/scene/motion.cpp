@@ -8,25 +8,6 @@ namespace {
 
 using Mat3 = double[3][3];
 
-double det3(const Mat3& m) {
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-// The inverse transpose of m, into out.
-void inverseTranspose(const Mat3& m, Mat3& out) {
-  const double d = det3(m);
-  out[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / d;
-  out[0][1] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) / d;
-  out[0][2] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) / d;
-  out[1][0] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / d;
-  out[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / d;
-  out[1][2] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / d;
-  out[2][0] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / d;
-  out[2][1] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / d;
-  out[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / d;
-}
-
 // Shepperd's method: the unit quaternion of rotation matrix r.
 void quaternionOf(const Mat3& r, double q[4]) {
   const double trace = r[0][0] + r[1][1] + r[2][2];
@@ -79,24 +60,27 @@ DecomposedTransform decompose(const Transform& t) {
   DecomposedTransform d;
   d.translate = {t.m[0][3], t.m[1][3], t.m[2][3]};
   Mat3 m, r;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = r[i][j] = t.m[i][j];
   // A mirror has no rotation quaternion: take -M = (-R) S with det(-R) = +1,
   // and keep the sign in the stretch.
-  const double sign = det3(m) < 0 ? -1 : 1;
-  for (auto& row : r)
-    for (double& x : row) x *= sign;
+  const double sign = t.determinant() < 0 ? -1 : 1;
+  Transform polar;  // its linear part converges to R; no translation
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      m[i][j] = t.m[i][j];
+      polar.m[i][j] = sign * t.m[i][j];
+    }
   // Polar decomposition by Higham's iteration R <- (R + R^-T) / 2.
   for (int iteration = 0; iteration < 100; ++iteration) {
-    Mat3 it, next;
-    inverseTranspose(r, it);
+    const Transform inverse = polar.inverse();
     double change = 0;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
-        next[i][j] = 0.5 * (r[i][j] + it[i][j]);
-        change = std::max(change, std::fabs(next[i][j] - r[i][j]));
+        const double next = 0.5 * (polar.m[i][j] + inverse.m[j][i]);  // R^-T: the inverse, transposed
+        change = std::max(change, std::fabs(next - polar.m[i][j]));
+        r[i][j] = next;
       }
-    std::copy(&next[0][0], &next[0][0] + 9, &r[0][0]);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) polar.m[i][j] = r[i][j];
     if (change < 1e-15) break;
   }
   quaternionOf(r, d.rotate);

@@ -7,6 +7,7 @@
 #pragma OPENCL FP_CONTRACT OFF
 
 #define PRISM_INF INFINITY
+#define PRISM_PI 3.14159265358979f
 
 /* For the small helpers of the traversal loops, which take pointers to a ray's
  * private state. PoCL's compiler left them as calls (perf showed packet_closest

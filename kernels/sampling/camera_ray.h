@@ -7,28 +7,13 @@
 #define PRISM_SAMPLING_CAMERA_RAY_H
 
 #include "common/math.h"
+#include "sampling/warp.h"
 #include "shared/camera_gpu.h"
 
 inline float3 camera_ray_dir(__global const CameraGpu* camera, float fx, float fy) {
   float x = 2.0f * fx / (float)camera->width - 1.0f;
   float y = 1.0f - 2.0f * fy / (float)camera->height;
   return normalize(load3g(camera->forward) + x * load3g(camera->right) + y * load3g(camera->up));
-}
-
-/* A point of the unit disk for u in [0, 1)^2, by Shirley and Chiu's concentric
- * map (it keeps strata compact). */
-inline float2 concentric_disk(float2 u) {
-  float2 s = 2.0f * u - (float2)(1.0f, 1.0f);
-  if (s.x == 0.0f && s.y == 0.0f) return (float2)(0.0f, 0.0f);
-  float r, theta;
-  if (fabs(s.x) > fabs(s.y)) {
-    r = s.x;
-    theta = 0.785398163f * (s.y / s.x);
-  } else {
-    r = s.y;
-    theta = 1.570796327f - 0.785398163f * (s.x / s.y);
-  }
-  return (float2)(r * cos(theta), r * sin(theta));
 }
 
 /* The ray of film position (fx, fy) for time sample u_time and lens sample

@@ -10,10 +10,9 @@
 #define PRISM_SHADING_LIGHT_H
 
 #include "common/math.h"
+#include "sampling/warp.h"
 #include "shading/frame.h"
 #include "shared/light_gpu.h"
-
-#define PRISM_PI 3.14159265358979f
 
 /* The point on the light that a shadow feeler from p goes to, for sample u in
  * [0, 1)^2: unit direction *dir, distance *dist, and *scale, the factor of the
@@ -69,20 +68,8 @@ inline bool light_sample(__global const LightGpu* light, float3 p, float2 u, flo
   float3 y;
   if (light->type == LIGHT_QUAD) {
     y = c + u.x * e1 + u.y * e2;
-  } else { /* disk: the concentric map of the square onto it (Shirley and Chiu) */
-    float2 s = 2.0f * u - (float2)(1.0f, 1.0f);
-    float2 d = (float2)(0.0f, 0.0f);
-    if (s.x != 0.0f || s.y != 0.0f) {
-      float rr, th;
-      if (fabs(s.x) > fabs(s.y)) {
-        rr = s.x;
-        th = (PRISM_PI / 4.0f) * (s.y / s.x);
-      } else {
-        rr = s.y;
-        th = (PRISM_PI / 2.0f) - (PRISM_PI / 4.0f) * (s.x / s.y);
-      }
-      d = (float2)(rr * cos(th), rr * sin(th));
-    }
+  } else { /* disk: e1 and e2 are its orthogonal radii */
+    float2 d = concentric_disk(u);
     y = c + d.x * e1 + d.y * e2;
   }
   float3 to_y = y - p;

@@ -7,6 +7,7 @@
 #ifndef PRISM_SHADING_MATERIAL_H
 #define PRISM_SHADING_MATERIAL_H
 
+#include "common/math.h"
 #include "shading/frame.h"
 #include "shading/local.h"
 #include "shading/optics.h"
@@ -16,7 +17,7 @@
 inline float3 sample_phong_lobe(float3 axis, float exponent, float2 u) {
   float cos_t = pow(1.0f - u.x, 1.0f / (exponent + 1.0f));
   float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
-  float phi = 2.0f * 3.14159265358979f * u.y;
+  float phi = 2.0f * PRISM_PI * u.y;
   float3 t, b;
   orthonormal_basis(axis, &t, &b);
   return normalize(sin_t * cos(phi) * t + sin_t * sin(phi) * b + cos_t * axis);

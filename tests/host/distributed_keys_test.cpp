@@ -12,27 +12,12 @@
 #include "scene/light_check.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
+#include "support/scene_errors.h"
 
 using namespace prism;
+using namespace prism::test;
 
 namespace {
-
-std::string errorOf(const std::string& json) {
-  try {
-    parseScene(json, "bad.json");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
-
-bool near(const Vec3& a, const Vec3& b, double eps = 1e-12) {
-  return std::fabs(a.x - b.x) <= eps && std::fabs(a.y - b.y) <= eps && std::fabs(a.z - b.z) <= eps;
-}
 
 std::string light(const std::string& body) { return R"({"lights": [{"position": [0, 5, 0]}, )" + body + "]}"; }
 std::string camera(const std::string& body) {

@@ -11,30 +11,14 @@
 
 #include "scene/scene.h"
 #include "scene/transform.h"
+#include "support/scene_errors.h"
 
 using namespace prism;
+using namespace prism::test;
 
 namespace {
 
 const std::string kScenes = std::string(PRISM_SOURCE_DIR) + "/scenes/";
-
-// The message of the SceneError that parsing `json` throws, or "" if none.
-std::string errorOf(const std::string& json) {
-  try {
-    parseScene(json, "bad.json");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool contains(const std::string& haystack, const std::string& needle) {
-  return haystack.find(needle) != std::string::npos;
-}
-
-bool near(const Vec3& a, const Vec3& b, double eps = 1e-12) {
-  return std::fabs(a.x - b.x) <= eps && std::fabs(a.y - b.y) <= eps && std::fabs(a.z - b.z) <= eps;
-}
 
 bool nearIdentity(const Transform& t, double eps) {
   const Transform id;

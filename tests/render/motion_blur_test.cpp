@@ -51,6 +51,18 @@ double coveredFraction(const Vec3& o, const Vec3& d) {
   return std::max(0.0, std::min(1.0, s1) - std::max(0.0, s0));
 }
 
+// Every structure renders `scene` (with `opt`) to the same ids and colours as
+// the brute-force `reference`.
+void checkStructuresMatch(const Scene& scene, RenderOptions opt, const RenderResult& reference) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+    opt.accel = kind;
+    const RenderResult r = sharedRenderer().render(scene, opt);
+    INFO(accelName(kind));
+    CHECK(r.primid == reference.primid);
+    CHECK(r.rgba == reference.rgba);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("a sphere moving across the view covers each pixel for the time the integral predicts",
@@ -122,13 +134,7 @@ TEST_CASE("every structure finds moving spheres, boxes, triangles and planes whe
   RenderOptions opt = RenderOptions::fromScene(scene);
   opt.accel = AccelKind::None;
   const RenderResult reference = sharedRenderer().render(scene, opt);
-  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
-    opt.accel = kind;
-    const RenderResult r = sharedRenderer().render(scene, opt);
-    INFO(accelName(kind));
-    CHECK(r.primid == reference.primid);
-    CHECK(r.rgba == reference.rgba);
-  }
+  checkStructuresMatch(scene, opt, reference);
 }
 
 TEST_CASE("motion interpolation reproduces both ends and turns at a constant rate", "[host][motion]") {
@@ -175,11 +181,5 @@ TEST_CASE("a moving mesh looks the same through every structure as through brute
   const int per_mesh = static_cast<int>(scene.objects[0].mesh->triangleCount());
   for (std::int32_t id : reference.primid) moving_hits += id >= 0 && id < per_mesh;
   REQUIRE(moving_hits > 50);  // the moving sphere is in view
-  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
-    opt.accel = kind;
-    const RenderResult r = sharedRenderer().render(scene, opt);
-    INFO(accelName(kind));
-    CHECK(r.primid == reference.primid);
-    CHECK(r.rgba == reference.rgba);
-  }
+  checkStructuresMatch(scene, opt, reference);
 }
