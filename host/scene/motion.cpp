@@ -115,7 +115,10 @@ Transform interpolate(const DecomposedTransform& a, const DecomposedTransform& b
   }
   if (c > 0.9995) {
     double n = 0;
-    for (int i = 0; i < 4; ++i) n += (q[i] = qa[i] + s * (qb[i] - qa[i])) * q[i];
+    for (int i = 0; i < 4; ++i) {
+      q[i] = qa[i] + s * (qb[i] - qa[i]);
+      n += q[i] * q[i];
+    }
     for (double& x : q) x /= std::sqrt(n);
   } else {
     const double theta = std::acos(c), st = std::sin(theta);
