@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -45,29 +46,34 @@ std::string fixed(double v, const char* format) {
 }
 
 void printHeader() {
-  std::printf("%-28s %9s %5s %8s %9s %9s %9s %9s %8s %8s %9s\n", "mesh", "tris", "tile", "cand/t", "bin s",
-              "zbuf s", "build s", "trace s", "x faster", "agree%", "depth err");
+  std::printf("%-28s %9s %7s %9s %9s %9s %9s %8s %8s %8s %9s\n", "mesh", "tris", "pairs/p", "setup s", "zbuf s",
+              "build s", "trace s", "x faster", "x +setup", "same%", "depth err");
+}
+
+double withSetup(const FirstHitRow& r) {
+  return (r.build_seconds + r.trace_seconds) / (r.setup_seconds + r.zbuffer_seconds);
 }
 
 void printRow(const FirstHitRow& r) {
   std::string scene = r.scene.size() > 28 ? "..." + r.scene.substr(r.scene.size() - 25) : r.scene;
-  std::printf("%-28s %9zu %5.0f %8.1f %9.4f %9.4f %9.4f %9.4f %8.2f %8.3f %9.1e\n", scene.c_str(), r.triangles,
-              r.tile_size, r.entries_per_tile, r.bin_seconds, r.zbuffer_seconds, r.build_seconds, r.trace_seconds,
-              r.trace_seconds / r.zbuffer_seconds, r.agreement, r.max_depth_error);
+  std::printf("%-28s %9zu %7.2f %9.4f %9.4f %9.4f %9.4f %8.2f %8.2f %8.3f %9.1e\n", scene.c_str(), r.triangles,
+              r.pairs_per_prim, r.setup_seconds, r.zbuffer_seconds, r.build_seconds, r.trace_seconds,
+              r.trace_seconds / r.zbuffer_seconds, withSetup(r), r.identical, r.max_depth_error);
   std::fflush(stdout);
 }
 
 void writeCsv(const std::string& path, const std::vector<FirstHitRow>& rows) {
   std::ofstream f(path);
   if (!f) throw std::runtime_error(path + ": cannot open for writing");
-  f << "mesh,triangles,tile_size,candidates_per_tile,bin_seconds,zbuffer_seconds,bvh_build_seconds,trace_seconds,"
-       "trace_over_zbuffer,agreement_percent,max_depth_error\n";
+  f << "mesh,triangles,pairs_per_primitive,setup_seconds,zbuffer_seconds,bvh_build_seconds,trace_seconds,"
+       "trace_over_zbuffer,with_setup_ratio,agreement_percent,identical_percent,max_depth_error\n";
   for (const FirstHitRow& r : rows)
-    f << r.scene << "," << r.triangles << "," << r.tile_size << "," << r.entries_per_tile << ","
-      << fixed(r.bin_seconds, "%.6g") << "," << fixed(r.zbuffer_seconds, "%.6g") << ","
+    f << r.scene << "," << r.triangles << "," << fixed(r.pairs_per_prim, "%.4g") << ","
+      << fixed(r.setup_seconds, "%.6g") << "," << fixed(r.zbuffer_seconds, "%.6g") << ","
       << fixed(r.build_seconds, "%.6g") << "," << fixed(r.trace_seconds, "%.6g") << ","
-      << fixed(r.trace_seconds / r.zbuffer_seconds, "%.4g") << "," << fixed(r.agreement, "%.4f") << ","
-      << fixed(r.max_depth_error, "%.3g") << "\n";
+      << fixed(r.trace_seconds / r.zbuffer_seconds, "%.4g") << "," << fixed(withSetup(r), "%.4g") << ","
+      << fixed(r.agreement, "%.4f") << "," << fixed(r.identical, "%.4f") << "," << fixed(r.max_depth_error, "%.3g")
+      << "\n";
 }
 
 void writePlot(const std::string& path, const std::vector<FirstHitRow>& rows, int width, int height) {
@@ -75,13 +81,13 @@ void writePlot(const std::string& path, const std::vector<FirstHitRow>& rows, in
   // reads "squares: meshes", which these are (short names: the legend is narrow).
   PlotSeries zbuffer{"zbuffer", {}, {}, 0xD55E00};
   PlotSeries trace{"trace (BVH)", {}, {}, 0x0072B2};
-  PlotSeries zbuffer_setup{"zbuf+bin", {}, {}, 0xE69F00};
+  PlotSeries zbuffer_setup{"zbuf+setup", {}, {}, 0xE69F00};
   PlotSeries trace_setup{"trace+build", {}, {}, 0x56B4E9};
   for (const FirstHitRow& r : rows) {
     const double n = static_cast<double>(r.triangles);
     zbuffer.markers.emplace_back(n, r.zbuffer_seconds);
     trace.markers.emplace_back(n, r.trace_seconds);
-    zbuffer_setup.markers.emplace_back(n, r.zbuffer_seconds + r.bin_seconds);
+    zbuffer_setup.markers.emplace_back(n, r.zbuffer_seconds + r.setup_seconds);
     trace_setup.markers.emplace_back(n, r.trace_seconds + r.build_seconds);
   }
   writeLogLogPlot(path,
@@ -95,16 +101,18 @@ const char* const kFirstHitUsage =
     "usage: prism-bench firsthit [options] [FILES...]\n"
     "\n"
     "Primary visibility two ways on the same samples (every pixel centre of a camera\n"
-    "framing the mesh): the first-hit Z-buffer pass (primitives binned into screen\n"
-    "tiles, one kernel over the samples) against primary rays traced through a BVH.\n"
-    "Times the set-up (binning; BVH build) and the kernels apart, and checks that\n"
-    "both find the same primitives. FILES are mesh files; without FILES, the shared\n"
-    "benchmark meshes from about 1k to 1.1M triangles.\n"
+    "framing the mesh): the first-hit Z-buffer pass (samples sorted by pixel,\n"
+    "primitives projected and scan-converted by kernels) against primary rays traced\n"
+    "through a BVH. Times the host set-up (FirstHitPass::prepare; BVH build) and the\n"
+    "device work apart, and checks that both give the same hits bit for bit. FILES\n"
+    "are mesh files; without FILES, the shared benchmark meshes from about 1k to\n"
+    "1.1M triangles.\n"
     "\n"
     "options:\n"
     "  --device D     OpenCL device: index, cpu, gpu or a name substring\n"
     "  --size WxH     samples (default 1024x1024)\n"
     "  --repeat N     timings are the median of N runs (default 3)\n"
+    "  --profile      also print each z-buffer kernel's device time (one run)\n"
     "  --out DIR      where firsthit.csv and firsthit.png go (default bench-out)\n"
     "  --data DIR     folder of the shared meshes (default: the source tree's)\n";
 
@@ -134,6 +142,8 @@ int firstHitMain(const std::vector<std::string>& args) {
     if (a == "--help" || a == "-h") {
       std::cout << kFirstHitUsage;
       return 0;
+    } else if (a == "--profile") {
+      options.profile = true;
     } else if (a == "--device" || a == "--size" || a == "--repeat" || a == "--out" || a == "--data") {
       if (!has_value) return usage(a + " needs a value");
       const std::string v = args[++i];
@@ -177,8 +187,10 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
             << device.compute_units << " compute units)\n"
             << "samples: " << options.width << "x" << options.height
             << " pixel centres, camera framing each mesh; median of " << options.repeats << " runs\n"
-            << "zbuffer: binning on the host (bin s) + firsthit kernel (zbuf s); trace: BVH build (build s) + "
-               "extend kernel (trace s); x faster = trace s / zbuf s\n\n";
+            << "zbuffer: host set-up (setup s) + every kernel of the pass (zbuf s: sort, bound, raster, resolve);\n"
+               "trace: BVH build (build s) + extend kernel (trace s);\n"
+               "x faster = trace s / zbuf s; x +setup = (build s + trace s) / (setup s + zbuf s); same% = hits "
+               "identical bit for bit\n\n";
   printHeader();
 
   cl_kernel generate = context.kernel("generate.cl", "generate");
@@ -192,6 +204,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
     scene.objects.clear();  // only its camera is wanted here
     GpuScene gpu;
     gpu.objects = trianglesFromMesh(*mesh);
+    gpu.primitive_count = gpu.objects.size();
     gpu.camera = flattenScene(scene, render_options).camera;
 
     FirstHitRow row;
@@ -210,27 +223,31 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
     objects.writeVector(gpu.objects);
     Buffer hit_buffer(context, count * sizeof(HitGpu));
 
-    // Z-buffer: binning and upload, then the kernel (one untimed run first: PoCL
+    // Z-buffer: the host's set-up, then the pass (one untimed run first: PoCL
     // finishes compiling at the first launch of a work-group size).
     FirstHitPass pass(context);
-    row.bin_seconds = medianSeconds(options.repeats, [&] {
+    row.setup_seconds = medianSeconds(options.repeats, [&] {
       auto start = Clock::now();
       pass.prepare(gpu);
       context.finish();
       return secondsSince(start);
     });
-    const TileBins& bins = pass.bins();
-    row.tile_size = bins.tile_size;
-    row.entries_per_tile = static_cast<double>(bins.tile_prims.size()) / std::max<size_t>(1, bins.tileCount()) +
-                           static_cast<double>(bins.global_prims.size());
-    pass.run(objects, xy_buffer, static_cast<int>(count), hit_buffer);
+    pass.run(objects, xy_buffer, count, hit_buffer, 1);  // pixel centres, in pixel order
     context.finish();
+    row.pairs_per_prim = static_cast<double>(pass.stats().pairs) / std::max<size_t>(1, gpu.objects.size());
     row.zbuffer_seconds = medianSeconds(options.repeats, [&] {
       auto start = Clock::now();
-      pass.run(objects, xy_buffer, static_cast<int>(count), hit_buffer);
+      pass.run(objects, xy_buffer, count, hit_buffer, 1);  // pixel centres, in pixel order
       context.finish();
       return secondsSince(start);
     });
+    if (options.profile) {
+      context.profile().start();
+      pass.run(objects, xy_buffer, count, hit_buffer, 1);  // pixel centres, in pixel order
+      std::printf("  z-buffer kernels, one run:");
+      for (const KernelTime& k : context.profile().stop()) std::printf(" %s %.4f s", k.name.c_str(), k.seconds);
+      std::printf("\n");
+    }
     std::vector<HitGpu> zhits = hit_buffer.readVector<HitGpu>(count);
 
     // Trace: the primary rays of the same samples (generate.cl, the renderer's
@@ -260,15 +277,17 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
       return s;
     });
 
-    size_t same = 0;
+    size_t same = 0, identical = 0;
     for (size_t k = 0; k < count; ++k) {
       if (zhits[k].prim != thits[k].prim) continue;
       ++same;
+      if (std::memcmp(&zhits[k], &thits[k], sizeof(HitGpu)) == 0) ++identical;
       if (zhits[k].prim >= 0)
         row.max_depth_error =
             std::max(row.max_depth_error, std::fabs(double(zhits[k].t) - thits[k].t) / std::fabs(double(thits[k].t)));
     }
     row.agreement = 100.0 * same / count;
+    row.identical = 100.0 * identical / count;
     printRow(row);
     rows.push_back(row);
   }

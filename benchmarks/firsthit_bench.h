@@ -1,6 +1,6 @@
 // `prism-bench firsthit`: primary visibility two ways on the same sample
-// positions: the first-hit Z-buffer pass (render/firsthit.h: primitives binned
-// into screen tiles on the host, one kernel over the samples) against primary rays
+// positions: the first-hit Z-buffer pass (render/firsthit.h: samples sorted by
+// pixel, primitives projected and scan-converted on the device) against primary rays
 // traced through the BVH (extend), on the shared meshes from about 1k to 1M
 // triangles. docs/sampling.md has a run's figures.
 #pragma once
@@ -18,19 +18,20 @@ struct FirstHitBenchOptions {
   std::string out_dir = "bench-out";  // firsthit.csv and firsthit.png go here
   int width = 1024, height = 1024;    // one primary sample per pixel, through the centre
   int repeats = 3;                    // timings are the median of this many runs
+  bool profile = false;               // print the z-buffer's kernel times
   std::string command;                // for the report
 };
 
 struct FirstHitRow {
   std::string scene;
   std::size_t triangles = 0;
-  double bin_seconds = 0;       // Z-buffer set-up: binning on the host and upload
-  double zbuffer_seconds = 0;   // the firsthit kernel over every sample
+  double setup_seconds = 0;     // Z-buffer set-up on the host: FirstHitPass::prepare
+  double zbuffer_seconds = 0;   // the whole pass on the device: sort, bound, raster, resolve
   double build_seconds = 0;     // trace set-up: BVH build on the host
   double trace_seconds = 0;     // the extend kernel over every primary ray
-  double tile_size = 0;         // pixels per tile side
-  double entries_per_tile = 0;  // mean candidates per tile (tile lists + global list)
+  double pairs_per_prim = 0;    // (primitive, 8x8-pixel block) pairs rasterised per primitive
   double agreement = 0;         // % of samples with the same primitive both ways
+  double identical = 0;         // % of samples whose hit (primitive, t, u, v) is the same bits both ways
   double max_depth_error = 0;   // largest |t_zbuffer - t_trace| / t_trace where both hit the same primitive
 };
 

@@ -68,6 +68,11 @@ void Buffer::read(void* data, size_t bytes, size_t offset) const {
   PRISM_CL_CHECK(clEnqueueReadBuffer(m_queue, m_mem, CL_TRUE, offset, bytes, data, 0, nullptr, nullptr));
 }
 
+void Buffer::fill(const void* pattern, size_t pattern_bytes, size_t bytes) {
+  if (bytes == 0) return;
+  PRISM_CL_CHECK(clEnqueueFillBuffer(m_queue, m_mem, pattern, pattern_bytes, 0, bytes, 0, nullptr, nullptr));
+}
+
 void Buffer::reserve(Context& context, size_t bytes) {
   if (m_mem && bytes <= m_bytes) return;
   *this = Buffer(context, bytes);

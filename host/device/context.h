@@ -39,6 +39,9 @@ class Buffer {
   void read(void* data, size_t bytes, size_t offset = 0) const;
   // Grows (never shrinks) to at least `bytes`; contents are not kept.
   void reserve(Context& context, size_t bytes);
+  // Enqueues filling the first `bytes` (a multiple of the pattern's size) with a
+  // repeated pattern of 1, 2, 4, ... 128 bytes.
+  void fill(const void* pattern, size_t pattern_bytes, size_t bytes);
 
   template <typename T>
   void writeVector(const std::vector<T>& v) {

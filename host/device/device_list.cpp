@@ -47,6 +47,13 @@ std::string describeAll(const std::vector<DeviceDescription>& devices) {
 
 }  // namespace
 
+bool DeviceDescription::hasExtension(const std::string& name) const {
+  std::istringstream words(extensions);
+  for (std::string w; words >> w;)
+    if (w == name) return true;
+  return false;
+}
+
 std::vector<DeviceDescription> listDevices() {
   cl_uint platform_count = 0;
   // With no ICD installed the loader reports CL_PLATFORM_NOT_FOUND_KHR: that is
@@ -76,6 +83,7 @@ std::vector<DeviceDescription> listDevices() {
       desc.compute_units = deviceValue<cl_uint>(d, CL_DEVICE_MAX_COMPUTE_UNITS);
       desc.global_memory_bytes = deviceValue<cl_ulong>(d, CL_DEVICE_GLOBAL_MEM_SIZE);
       desc.max_work_group_size = deviceValue<size_t>(d, CL_DEVICE_MAX_WORK_GROUP_SIZE);
+      desc.extensions = deviceString(d, CL_DEVICE_EXTENSIONS);
       result.push_back(desc);
     }
   }

@@ -19,6 +19,9 @@ struct DeviceDescription {
   unsigned compute_units = 0;
   std::uint64_t global_memory_bytes = 0;
   std::size_t max_work_group_size = 1;
+  std::string extensions;  // CL_DEVICE_EXTENSIONS, space-separated
+
+  bool hasExtension(const std::string& name) const;
 };
 
 // Every device of every platform; empty when no OpenCL runtime is installed.

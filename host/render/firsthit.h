@@ -1,10 +1,12 @@
 // The first-hit (Z-buffer) pass for a pinhole camera: per sample position, the
-// depth and id of the nearest primitive, found without tracing through an
-// acceleration structure. The host bins primitives into screen tiles by their
-// projected bounds (counting sort, O(primitives + entries)); kernels/firsthit.cl
-// then tests each sample against its tile's candidates with the tracer's exact
-// intersection routine. Cameras with depth of field or motion blur need traced
-// primary rays instead (docs/sampling.md).
+// depth and id of the nearest primitive, found by scan conversion on the device
+// instead of tracing through an acceleration structure (kernels/firsthit.cl).
+// Per batch of positions: the samples are sorted by film pixel, every primitive
+// is projected to conservative film bounds, and each (primitive, 8x8-pixel
+// block) pair tests the samples of its pixels with the tracer's own ray test,
+// keeping the nearest (t, primitive) per sample by an atomic minimum; a resolve
+// per chunk then gives the hits. Cameras with depth of field or motion blur need
+// traced primary rays instead (docs/sampling.md).
 #pragma once
 
 #include <cstddef>
@@ -13,63 +15,74 @@
 
 #include "device/context.h"
 #include "kernels/shared/hit_gpu.h"
+#include "render/device_scan.h"
 #include "render/gpu_scene.h"
 
 namespace prism {
 
-// Primitives binned into square screen tiles of the scene's film
-// (scene.camera.width x height).
-struct TileBins {
-  int tile_size = 0;  // pixels per tile side
-  int tiles_x = 0, tiles_y = 0;
-  std::vector<std::int32_t> tile_start;    // tiles_x * tiles_y + 1 offsets into tile_prims, row by row
-  std::vector<std::int32_t> tile_prims;    // each tile's candidates, ascending primitive index
-  // Per entry of tile_prims, 4 floats: the candidate's padded screen bounds
-  // x0, y0, x1, y1 (film coordinates; infinite where its image is unbounded). The
-  // kernel skips a candidate whose bounds miss the sample before any ray test.
-  std::vector<float> tile_bounds;
-  // Per entry: a lower bound on the candidate's view depth (distance along the
-  // camera's forward axis; 0 where it reaches the camera plane). The kernel skips a
-  // candidate that cannot come nearer than the hit it already has.
-  std::vector<float> tile_depths;
-  std::vector<std::int32_t> global_prims;  // candidates of every tile: planes, primitives crossing the camera plane
-  std::size_t culled = 0;                  // behind the camera or off the film: in no list
+// How the depth + id entries are kept: one 64-bit atomic minimum per hit (Wide,
+// needs cl_khr_int64_extended_atomics) or two raster passes of 32-bit ones
+// (Narrow, any OpenCL 1.2 device). Auto: Wide where the device has it. Both
+// give the same hits.
+enum class ZBufferAtomics { Auto, Wide, Narrow };
 
-  std::size_t tileCount() const { return static_cast<std::size_t>(tiles_x) * tiles_y; }
+struct FirstHitStats {
+  std::size_t samples = 0;      // positions in the last batch
+  std::size_t pairs = 0;        // (primitive, block) pairs it rasterised
+  std::size_t others = 0;       // primitives tested through object_intersect (not plain triangles)
+  bool wide_atomics = false;
 };
 
-// Tile side chosen from the number of primitives to bin: about 8 candidates a
-// tile on average, a power of two in 2..32 pixels.
-int autoTileSize(std::size_t primitives, int width, int height);
-
-// Bins each primitive by the screen bounds of a convex hull of it: a triangle's
-// three vertices; a sphere's or box's object-space bounding box mapped by its
-// transform (eight corners). Where the hull crosses the camera plane its image is
-// unbounded, and the bounds open towards where the crossing points lie; a hull
-// entirely behind the camera, or whose bounds miss the film, is culled. Planes go
-// to the global list. tile_size 0: autoTileSize.
-TileBins binPrimitives(const GpuScene& scene, int tile_size = 0);
-
-// The pass on one device: upload the bins once (prepare), then run it on
-// batches of sample positions already on the device.
 class FirstHitPass {
  public:
-  explicit FirstHitPass(Context& context);
-  void prepare(const GpuScene& scene, int tile_size = 0);
-  const TileBins& bins() const { return m_bins; }
-  // hits[k] for the `count` positions xy[2k], xy[2k+1] (film coordinates in
-  // [0, W] x [0, H]); `objects` holds the scene's ObjectGpu array.
-  void run(const Buffer& objects, const Buffer& xy, int count, Buffer& hits);
+  explicit FirstHitPass(Context& context, ZBufferAtomics atomics = ZBufferAtomics::Auto);
+
+  // The scene's camera and what the kernels need besides its ObjectGpu array:
+  // the primitives that are not plain triangles, with their world bounds.
+  void prepare(const GpuScene& scene);
+  // The depth + id entries of the `count` positions xy[2k], xy[2k+1] for k in
+  // [first, first + count) (film coordinates in [0, W] x [0, H]); `objects` holds
+  // the scene's ObjectGpu array. Replaces the last batch. pixel_spp > 0 says the
+  // positions are in pixel order, pixel_spp to a pixel (position k in pixel
+  // k / pixel_spp, row by row), which spares sorting them; 0: any order.
+  void rasterize(const Buffer& objects, const Buffer& xy, std::size_t first, std::size_t count, int pixel_spp = 0);
+  // hits[k] for positions first + k, k < count, of the last batch; `chunk_xy`
+  // holds those positions from index 0.
+  void resolve(const Buffer& objects, const Buffer& chunk_xy, std::size_t first, std::size_t count, Buffer& hits);
+  // rasterize, then resolve the whole batch.
+  void run(const Buffer& objects, const Buffer& xy, std::size_t count, Buffer& hits, int pixel_spp = 0);
+
+  const FirstHitStats& stats() const { return m_stats; }
+  // Device memory it holds now.
+  std::size_t deviceBytes() const;
 
  private:
   Context& m_context;
-  cl_kernel m_kernel;
-  TileBins m_bins;
-  Buffer m_camera, m_tile_start, m_tile_prims, m_tile_bounds, m_tile_depths, m_global_prims;
+  ZBufferAtomics m_atomics;
+  DeviceScan m_scan;
+  cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_major = nullptr, m_bound = nullptr, m_emit = nullptr,
+            m_raster = nullptr, m_resolve = nullptr;
+  bool m_wide = false;
+  int m_width = 0, m_height = 0;
+  std::size_t m_prims = 0, m_others = 0, m_batch = 0;
+  FirstHitStats m_stats;
+  Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_sorted, m_entries, m_cells,
+      m_block_count, m_pair_start, m_pairs;
 };
 
-// Convenience for tests and tools: bins, uploads and runs in one call.
+// `--first-hit auto`'s choice: whether the Z-buffer should beat tracing the
+// primary rays of `samples` positions through a BVH, by a cost model calibrated
+// with `prism-bench firsthit` on PoCL (docs/sampling.md has the figures): the
+// pass costs about a per-sample part plus a per-primitive part, tracing about a
+// per-sample part, so it pays while primitives <= kZBufferPrimsPerSample x
+// samples; an unbounded primitive (a plane) is tested at every sample, which
+// counts as kUnboundedAsPrims x samples primitives.
+constexpr double kZBufferPrimsPerSample = 0.2;
+constexpr double kUnboundedAsPrims = 0.35;
+bool zbufferPays(const GpuScene& scene, std::uint64_t samples);
+
+// Convenience for tests and tools: prepares, uploads and runs in one call.
 std::vector<HitGpu> firstHits(Context& context, const GpuScene& scene, const std::vector<float>& sample_xy,
-                              int tile_size = 0);
+                              ZBufferAtomics atomics = ZBufferAtomics::Auto, int pixel_spp = 0);
 
 }  // namespace prism

@@ -70,7 +70,6 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   // The first-hit pass serves rays that leave one point at one instant.
   const bool pinhole = scene.camera.isPinhole();
   FirstHitMode first_hit = options.first_hit;
-  if (first_hit == FirstHitMode::Auto) first_hit = pinhole ? FirstHitMode::ZBuffer : FirstHitMode::Trace;
   if (first_hit == FirstHitMode::ZBuffer && !pinhole)
     throw std::invalid_argument(std::string("first hit zbuffer needs a pinhole camera, but this one has ") +
                                 (scene.camera.aperture > 0 ? "an aperture (depth of field)"
@@ -78,6 +77,12 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
                                 ": its primary rays do not share one origin and instant; use first hit trace or auto");
 
   GpuScene gpu = flattenScene(scene, options);
+  if (first_hit == FirstHitMode::Auto) {
+    const std::uint64_t samples = sampling.mode == AaMode::Adaptive
+                                      ? static_cast<std::uint64_t>(options.width + 1) * (options.height + 1)
+                                      : sampleCount(sampling.mode, options.width, options.height, sampling.spp);
+    first_hit = pinhole && zbufferPays(gpu, samples) ? FirstHitMode::ZBuffer : FirstHitMode::Trace;
+  }
   // Each distributed effect's code is compiled only into the programs of scenes
   // that use it, so a Whitted scene builds what it did before (PoCL compiles slowly).
   const KernelFeatures features = kernelFeatures(scene, gpu);
@@ -172,6 +177,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   // The per-sample film can be large: give it back now rather than at the next render.
   m_film = Buffer();
   m_sample_xy = Buffer();
+  m_zbuffer_xy = Buffer();
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.profile) result.stats.kernels = m_context.profile().stop();
   return result;
@@ -194,8 +200,7 @@ void Renderer::renderSamples(const SamplingOptions& sampling, RenderResult& resu
   m_sample_xy = Buffer(m_context, total * kPositionBytesPerSample);
 
   // Chunks of kSliceRays samples in sequence order: keys ascend within each.
-  for (std::uint64_t first = 0; first < total; first += kSliceRays) {
-    const size_t n = static_cast<size_t>(std::min<std::uint64_t>(kSliceRays, total - first));
+  auto positions = [&](std::uint64_t first, size_t n) {
     m_context.launch(m_supersample)
         .arg(static_cast<cl_int>(sampling.mode))
         .arg(static_cast<cl_int>(opt.width))
@@ -211,8 +216,27 @@ void Renderer::renderSamples(const SamplingOptions& sampling, RenderResult& resu
     PRISM_CL_CHECK(clEnqueueCopyBuffer(m_context.queue(), m_chunk_xy.handle(), m_sample_xy.handle(), 0,
                                        first * kPositionBytesPerSample, n * kPositionBytesPerSample, 0, nullptr,
                                        nullptr));
-    traceChunk(static_cast<int>(first), n);
-    if (progress && !progress(static_cast<double>(first + n) / static_cast<double>(total))) throw RenderCancelled();
+  };
+  // The Z-buffer takes kZBufferBatch samples at once: their positions first,
+  // rasterised together, then resolved chunk by chunk.
+  const std::uint64_t batch = m_zbuffer ? kZBufferBatch : total;
+  for (std::uint64_t batch_first = 0; batch_first < total; batch_first += batch) {
+    const std::uint64_t batch_end = std::min(total, batch_first + batch);
+    if (m_zbuffer) {
+      for (std::uint64_t first = batch_first; first < batch_end; first += kSliceRays)
+        positions(first, static_cast<size_t>(std::min<std::uint64_t>(kSliceRays, batch_end - first)));
+      // Per-pixel modes number their samples pixel by pixel: no sort needed.
+      m_firsthit->rasterize(m_objects, m_sample_xy, static_cast<size_t>(batch_first),
+                            static_cast<size_t>(batch_end - batch_first),
+                            sampling.mode == AaMode::Quincunx ? 0 : sampling.spp);
+    }
+    for (std::uint64_t first = batch_first; first < batch_end; first += kSliceRays) {
+      const size_t n = static_cast<size_t>(std::min<std::uint64_t>(kSliceRays, batch_end - first));
+      positions(first, n);
+      m_zbuffer_first = static_cast<size_t>(first - batch_first);
+      traceChunk(static_cast<int>(first), n);
+      if (progress && !progress(static_cast<double>(first + n) / static_cast<double>(total))) throw RenderCancelled();
+    }
   }
 
   m_pixels.reserve(m_context, pixels * 4 * sizeof(float));
@@ -279,6 +303,14 @@ std::vector<float> Renderer::traceFilmPositions(const std::vector<float>& xy,
     zeroFill(m_film, count * kFilmBytesPerSample);
     for (size_t first = 0; first < count; first += kSliceRays) {
       const size_t m = std::min(kSliceRays, count - first);
+      if (m_zbuffer && first % kZBufferBatch == 0) {
+        // The next Z-buffer batch of positions, rasterised together.
+        const size_t z = std::min<size_t>(kZBufferBatch, count - first);
+        m_zbuffer_xy.reserve(m_context, z * kPositionBytesPerSample);
+        m_zbuffer_xy.write(xy.data() + 2 * (begin + first), z * kPositionBytesPerSample);
+        m_firsthit->rasterize(m_objects, m_zbuffer_xy, 0, z);
+      }
+      m_zbuffer_first = first % kZBufferBatch;
       m_chunk_xy.write(xy.data() + 2 * (begin + first), m * kPositionBytesPerSample);
       m_chunk_aov.write(aov_pixel.data() + begin + first, m * sizeof(std::int32_t));
       m_group_base = static_cast<long long>(m_stats->rays_by_kind[RAY_KIND_PRIMARY]) - static_cast<long long>(first);
@@ -305,7 +337,7 @@ void Renderer::traceChunk(int first_key, size_t n) {
       .run(n);
   m_stats->rays_by_kind[RAY_KIND_PRIMARY] += n;
   m_stats->waves = std::max(m_stats->waves, 1);
-  if (m_zbuffer) m_firsthit->run(m_objects, m_chunk_xy, static_cast<int>(n), m_hits);
+  if (m_zbuffer) m_firsthit->resolve(m_objects, m_chunk_xy, m_zbuffer_first, n, m_hits);
   traceSlice(0, n, m_zbuffer);
 }
 
@@ -414,8 +446,7 @@ void Renderer::accumulate(const Buffer& contributions, size_t count) {
 void Renderer::zeroFill(Buffer& buffer, size_t bytes) {
   if (bytes == 0) return;
   const cl_float zero = 0.0f;
-  PRISM_CL_CHECK(
-      clEnqueueFillBuffer(m_context.queue(), buffer.handle(), &zero, sizeof zero, 0, bytes, 0, nullptr, nullptr));
+  buffer.fill(&zero, sizeof zero, bytes);
 }
 
 void Renderer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
@@ -432,9 +463,8 @@ void Renderer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
                           &m_shadow_light, &m_counts, &m_offsets, &m_chunk_xy, &m_chunk_aov})
     other += b->bytes();
   for (const Buffer& b : m_levels) other += b.bytes();
-  if (m_firsthit && m_zbuffer)
-    other += 4 * (m_firsthit->bins().tile_prims.size() + m_firsthit->bins().tile_start.size() +
-                  m_firsthit->bins().global_prims.size());
+  if (m_firsthit && m_zbuffer)  // its per-sample buffers at their largest; its pairs are not known yet
+    other += m_firsthit->deviceBytes() + kZBufferBatch * kZBufferBytesPerSample;
 
   const std::uint64_t per_sample = kFilmBytesPerSample + (with_positions ? kPositionBytesPerSample : 0);
   const std::uint64_t max_key = static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());

@@ -83,6 +83,11 @@ class Renderer {
   // of a slice go in runs of kShadowSlots / (feelers per point), so memory does
   // not grow with the number of light samples. A constant, like kSliceRays.
   static constexpr size_t kShadowSlots = 4 * kSliceRays;
+  // Samples the first-hit pass rasterises at once (a whole number of slices),
+  // and its device bytes per sample (sorted ray direction 16, depth + id 8,
+  // positions 8 where the render has no frame-wide copy of them).
+  static constexpr size_t kZBufferBatch = 64 * kSliceRays;
+  static constexpr size_t kZBufferBytesPerSample = 32;
 
   // How many slices of adaptive sample positions the device film holds at once
   // (256 by default: 16M positions, 256 MiB); the colours go back to the host
@@ -145,6 +150,8 @@ class Renderer {
   Buffer m_camera, m_objects, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
   Buffer m_film;       // rgba per primary sample, indexed by the sample's key
   Buffer m_sample_xy;  // film positions of all samples (for resolve)
+  Buffer m_zbuffer_xy;  // adaptive sampling: the positions of the Z-buffer's batch
+  size_t m_zbuffer_first = 0;  // the chunk's first sample within the Z-buffer's batch
   Buffer m_chunk_xy, m_chunk_aov, m_tile, m_pixels;
   std::vector<Buffer> m_levels;  // queue of each depth >= 1, up to 2 * kSliceRays rays
   Buffer m_work, m_hits, m_emit, m_children, m_surfaces, m_shadows, m_shadow_queue, m_shadow_light, m_counts,

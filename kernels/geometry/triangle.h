@@ -5,25 +5,45 @@
 
 #include "common/math.h"
 
-inline bool triangle_intersect(float3 o, float3 d, float tmin, float tmax, float3 v0, float3 v1, float3 v2,
-                               float* t_out, float* u_out, float* v_out) {
-  float3 e1 = v1 - v0, e2 = v2 - v0;
-  float3 pv = cross(d, e2);
-  float det = dot(e1, pv);
+/* The terms of the solve that depend on the ray's origin alone: rays from one
+ * point (a pinhole camera's primary rays) share them, and the first-hit pass
+ * computes them once per triangle. triangle_intersect is this split, so the two
+ * give the same t, u and v bit for bit. */
+typedef struct {
+  float3 e1, e2, tv, qv;
+} TriangleFromOrigin;
+
+inline TriangleFromOrigin triangle_from_origin(float3 o, float3 v0, float3 v1, float3 v2) {
+  TriangleFromOrigin s;
+  s.e1 = v1 - v0;
+  s.e2 = v2 - v0;
+  s.tv = o - v0;
+  s.qv = cross(s.tv, s.e1);
+  return s;
+}
+
+inline bool triangle_intersect_from(const TriangleFromOrigin* s, float3 d, float tmin, float tmax, float* t_out,
+                                    float* u_out, float* v_out) {
+  float3 pv = cross(d, s->e2);
+  float det = dot(s->e1, pv);
   if (det == 0.0f) return false; /* ray parallel to the triangle's plane */
   float inv_det = 1.0f / det;
-  float3 tv = o - v0;
-  float u = dot(tv, pv) * inv_det;
+  float u = dot(s->tv, pv) * inv_det;
   if (u < 0.0f || u > 1.0f) return false;
-  float3 qv = cross(tv, e1);
-  float v = dot(d, qv) * inv_det;
+  float v = dot(d, s->qv) * inv_det;
   if (v < 0.0f || u + v > 1.0f) return false;
-  float t = dot(e2, qv) * inv_det;
+  float t = dot(s->e2, s->qv) * inv_det;
   if (!(t > tmin && t < tmax)) return false;
   *t_out = t;
   *u_out = u;
   *v_out = v;
   return true;
+}
+
+inline bool triangle_intersect(float3 o, float3 d, float tmin, float tmax, float3 v0, float3 v1, float3 v2,
+                               float* t_out, float* u_out, float* v_out) {
+  TriangleFromOrigin s = triangle_from_origin(o, v0, v1, v2);
+  return triangle_intersect_from(&s, d, tmin, tmax, t_out, u_out, v_out);
 }
 
 inline float3 triangle_normal(float3 v0, float3 v1, float3 v2) { return normalize(cross(v1 - v0, v2 - v0)); }

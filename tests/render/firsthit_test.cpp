@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -125,36 +126,53 @@ std::vector<float> samplePoints(int width, int height, int spp, std::uint64_t se
 }
 
 struct Agreement {
-  size_t samples = 0, same_prim = 0, hits = 0, depth_off = 0;
-  double worst_depth = 0;
+  size_t samples = 0, same_prim = 0, identical = 0, hits = 0;
 };
 
-// firstHits against traceClosest on the same rays.
-Agreement compare(const Scene& scene, const std::vector<float>& xy, int tile_size = 0) {
+// firstHits against traceClosest (a brute-force loop over the scene, equal
+// depths to the lower index) on the same rays, with either kind of atomics.
+Agreement compare(const Scene& scene, const std::vector<float>& xy, ZBufferAtomics atomics) {
   RenderOptions options = RenderOptions::fromScene(scene);
   GpuScene gpu = flattenScene(scene, options);
-  std::vector<HitGpu> z = firstHits(sharedContext(), gpu, xy, tile_size);
+  std::vector<HitGpu> z = firstHits(sharedContext(), gpu, xy, atomics);
   std::vector<HitGpu> traced = traceClosest(sharedContext(), scene, cameraRays(gpu.camera, xy));
   Agreement a;
   a.samples = z.size();
   for (size_t k = 0; k < z.size(); ++k) {
     if (z[k].prim != traced[k].prim) continue;
     ++a.same_prim;
-    if (z[k].prim < 0) continue;
-    ++a.hits;
-    double rel = std::fabs(static_cast<double>(z[k].t) - traced[k].t) / traced[k].t;
-    a.worst_depth = std::max(a.worst_depth, rel);
-    if (rel > 1e-5) ++a.depth_off;
+    if (z[k].prim >= 0) ++a.hits;
+    // The same routine on the same ray: the same t, u, v bit for bit.
+    if (z[k].prim < 0 || std::memcmp(&z[k], &traced[k], sizeof(HitGpu)) == 0) ++a.identical;
   }
   return a;
 }
 
-void checkAgreement(const Agreement& a) {
-  INFO(a.samples << " samples, " << a.same_prim << " with the same primid, " << a.hits << " hits, worst depth "
-                 << a.worst_depth);
-  CHECK(a.same_prim >= 0.9999 * a.samples);
-  CHECK(a.depth_off == 0);
-  CHECK(a.hits > a.samples / 4);
+// Both kinds of atomics (the narrow one is what a device without 64-bit atomics runs).
+void checkAgreement(const Scene& scene, const std::vector<float>& xy) {
+  for (ZBufferAtomics atomics : {ZBufferAtomics::Wide, ZBufferAtomics::Narrow}) {
+    if (atomics == ZBufferAtomics::Wide && !sharedContext().device().hasExtension("cl_khr_int64_extended_atomics"))
+      continue;
+    Agreement a = compare(scene, xy, atomics);
+    INFO((atomics == ZBufferAtomics::Wide ? "64-bit" : "32-bit") << " atomics: " << a.samples << " samples, "
+                                                                 << a.same_prim << " with the same primid, "
+                                                                 << a.identical << " identical, " << a.hits << " hits");
+    CHECK(a.same_prim == a.samples);
+    CHECK(a.identical == a.samples);
+    CHECK(a.hits > a.samples / 4);
+  }
+}
+
+FirstHitStats passStats(const GpuScene& gpu, const std::vector<float>& xy) {
+  Context& ctx = sharedContext();
+  FirstHitPass pass(ctx);
+  pass.prepare(gpu);
+  Buffer objects(ctx, gpu.objects.size() * sizeof(ObjectGpu)), pos(ctx, xy.size() * sizeof(float)),
+      hits(ctx, xy.size() / 2 * sizeof(HitGpu));
+  objects.writeVector(gpu.objects);
+  pos.writeVector(xy);
+  pass.run(objects, pos, xy.size() / 2, hits);
+  return pass.stats();
 }
 
 // An ASCII PLY reader for the shared data's bunnies (x y z first among the vertex
@@ -222,14 +240,24 @@ TEST_CASE("first hits agree with traced rays on triangles, transformed spheres a
   }
   scene.objects.push_back(plane({0, -3.5, 0}, normalize(Vec3{0.05, 1, 0.1})));
   std::vector<float> xy = samplePoints(96, 72, 3, 7);
-  for (int tile : {0, 8, 32}) {
-    INFO("tile size " << tile);
-    checkAgreement(compare(scene, xy, tile));
-  }
+  checkAgreement(scene, xy);
   RenderOptions options = RenderOptions::fromScene(scene);
-  TileBins bins = binPrimitives(flattenScene(scene, options));
-  CHECK(bins.global_prims.size() >= 1);  // the plane
-  CHECK(bins.tile_prims.size() < 8 * scene.objects.size());
+  const GpuScene gpu = flattenScene(scene, options);
+  // Positions in pixel order (3 to a pixel, as the per-pixel modes number them)
+  // need no sort: the same hits as sorting them.
+  SamplingOptions random;
+  random.mode = AaMode::Random;
+  random.spp = 3;
+  std::vector<float> ordered = samplePositions(sharedContext(), random, 96, 72, 8);
+  std::vector<HitGpu> sorted = firstHits(sharedContext(), gpu, ordered, ZBufferAtomics::Auto, 0);
+  std::vector<HitGpu> unsorted = firstHits(sharedContext(), gpu, ordered, ZBufferAtomics::Auto, 3);
+  REQUIRE(sorted.size() == unsorted.size());
+  CHECK(std::memcmp(sorted.data(), unsorted.data(), sorted.size() * sizeof(HitGpu)) == 0);
+  FirstHitStats stats = passStats(gpu, xy);
+  CHECK(stats.others == 13);  // the spheres, the boxes and the plane
+  // The plane covers every 8x8 block (12 x 9); the triangles, mostly small, few each.
+  CHECK(stats.pairs >= 12 * 9);
+  CHECK(stats.pairs < 12 * 9 + 8 * scene.objects.size());
 }
 
 TEST_CASE("first hits agree with traced rays when primitives cross the camera plane or surround the camera",
@@ -254,11 +282,7 @@ TEST_CASE("first hits agree with traced rays when primitives cross the camera pl
   scene.objects.push_back(triangle({-1, -1, 0.5}, {1, -1, 0.5}, {0, 1, 0.7}));  // entirely behind
   scene.objects.push_back(sphere({0, 0, 0}, 1, Transform::translate({0.3, 0, 0.2}) * Transform::scale({1.5, 0.3, 2})));
   scene.objects.push_back(plane({0, -2, 0}, {0, 1, 0}));
-  checkAgreement(compare(scene, samplePoints(64, 48, 4, 3)));
-  RenderOptions options = RenderOptions::fromScene(scene);
-  TileBins bins = binPrimitives(flattenScene(scene, options));
-  CHECK(bins.culled >= 1);
-  CHECK(bins.global_prims.size() >= 3);  // the room, the flattened sphere, the plane
+  checkAgreement(scene, samplePoints(64, 48, 4, 3));
 }
 
 TEST_CASE("first hits agree with traced rays on a shared mesh", "[firsthit][mesh]") {
@@ -277,7 +301,7 @@ TEST_CASE("first hits agree with traced rays on a shared mesh", "[firsthit][mesh
   scene.objects.push_back(mesh);
   scene.objects.push_back(sphere({-1.3, 0.6, -0.5}, 0.5));
   scene.objects.push_back(plane({0, 0.05, 0}, {0, 1, 0}));
-  checkAgreement(compare(scene, samplePoints(80, 60, 4, 21)));
+  checkAgreement(scene, samplePoints(80, 60, 4, 21));
 }
 
 TEST_CASE("first hits on a million triangles match the closed form", "[firsthit][scale]") {
@@ -319,12 +343,12 @@ TEST_CASE("first hits on a million triangles match the closed form", "[firsthit]
   gpu.camera.height = height;
   gpu.camera.spp = 1;
 
-  TileBins bins = binPrimitives(gpu);
-  INFO("tile " << bins.tile_size << " px, " << bins.tile_prims.size() << " entries");
-  CHECK(bins.tile_prims.size() < 2 * gpu.objects.size());  // small triangles land in few tiles
-  CHECK(bins.global_prims.empty());
-
+  gpu.primitive_count = gpu.objects.size();
   std::vector<float> xy = samplePoints(width, height, 1, 9);
+  FirstHitStats stats = passStats(gpu, xy);
+  INFO(stats.pairs << " pairs");
+  CHECK(stats.pairs < 2 * gpu.objects.size());  // small triangles touch few blocks
+  CHECK(stats.others == 0);
   std::vector<HitGpu> hits = firstHits(sharedContext(), gpu, xy);
   // The closed form, in double from the float camera: skip samples within 1e-3
   // of a cell of an edge or a diagonal, where float rounding may pick either side.
@@ -356,4 +380,29 @@ TEST_CASE("first hits on a million triangles match the closed form", "[firsthit]
   CHECK(judged > 0.95 * hits.size());
   CHECK(agree >= 0.9999 * judged);
   CHECK(depth_off == 0);
+}
+
+TEST_CASE("first hit auto takes the Z-buffer while primitives are few beside the samples", "[firsthit]") {
+  // The rule of firsthit.h: bounded primitives count one each, an unbounded one
+  // kUnboundedAsPrims x samples; the Z-buffer pays up to kZBufferPrimsPerSample x samples.
+  GpuScene gpu;
+  ObjectGpu tri{};
+  tri.type = OBJECT_TRIANGLE;
+  const float v[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  std::copy(v, v + 9, tri.p);
+  const std::uint64_t samples = 1000000;
+  const size_t limit = static_cast<size_t>(kZBufferPrimsPerSample * samples);
+  gpu.objects.assign(limit, tri);
+  gpu.primitive_count = gpu.objects.size();
+  CHECK(zbufferPays(gpu, samples));
+  gpu.objects.push_back(tri);
+  gpu.primitive_count = gpu.objects.size();
+  CHECK_FALSE(zbufferPays(gpu, samples));
+  CHECK(zbufferPays(gpu, 2 * samples));
+  // One plane outweighs a few triangles.
+  Scene scene = emptyScene({0, 1, 5}, {0, 0, 0}, 40, 64, 48);
+  scene.objects.push_back(triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+  CHECK(zbufferPays(flattenScene(scene, RenderOptions::fromScene(scene)), 64 * 48));
+  scene.objects.push_back(plane({0, -1, 0}, {0, 1, 0}));
+  CHECK_FALSE(zbufferPays(flattenScene(scene, RenderOptions::fromScene(scene)), 64 * 48));
 }
