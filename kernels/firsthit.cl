@@ -37,44 +37,91 @@
 
 #define FIRSTHIT_BLOCK 8 /* pixels per side of a raster block */
 
+/* Cells (pixels) are numbered block by block, 8x8 pixels each, row by row
+ * inside a block, so the samples of a block lie together once sorted by cell:
+ * a (primitive, block) pair reads one run of them and updates one run of
+ * entries. Blocks past the film's edge hold empty cells. */
+inline int firsthit_cell(int x, int y, int width) {
+  int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
+  int block = (y / FIRSTHIT_BLOCK) * blocks_x + x / FIRSTHIT_BLOCK;
+  return block * FIRSTHIT_BLOCK * FIRSTHIT_BLOCK + (y % FIRSTHIT_BLOCK) * FIRSTHIT_BLOCK + x % FIRSTHIT_BLOCK;
+}
+
+/* The film pixel (x, y) of cell c, as int2. */
+inline int2 firsthit_cell_xy(int c, int width) {
+  int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
+  int block = c / (FIRSTHIT_BLOCK * FIRSTHIT_BLOCK), in = c % (FIRSTHIT_BLOCK * FIRSTHIT_BLOCK);
+  return (int2)((block % blocks_x) * FIRSTHIT_BLOCK + in % FIRSTHIT_BLOCK,
+                (block / blocks_x) * FIRSTHIT_BLOCK + in / FIRSTHIT_BLOCK);
+}
+
+/* The pixel of a film position (the far edges x = W, y = H to the last pixel). */
+inline int firsthit_position_cell(__global const CameraGpu* camera, float x, float y) {
+  int w = camera->width, h = camera->height;
+  return firsthit_cell((int)floor(clamp(x, 0.0f, (float)w - 1.0f)), (int)floor(clamp(y, 0.0f, (float)h - 1.0f)), w);
+}
+
 __kernel void firsthit_count_cells(__global const CameraGpu* camera, __global const float* xy, int first, int count,
                                    __global int* cell_count) {
   int k = get_global_id(0);
   if (k >= count) return;
-  FilmProjector c = film_projector(camera);
-  atomic_inc(&cell_count[film_cell(&c, xy[2 * (first + k)], xy[2 * (first + k) + 1])]);
+  atomic_inc(&cell_count[firsthit_position_cell(camera, xy[2 * (first + k)], xy[2 * (first + k) + 1])]);
 }
 
-/* cell_count comes back to zero (each sample takes one slot by counting down),
- * ready for the next batch. */
+/* Positions in any order: a counting sort. Within a cell the slots go in the
+ * order the atomics come, which changes nothing: the raster's minimum does not
+ * depend on order. cell_count comes back to zero (each sample takes a slot by
+ * counting down), ready for the next batch. */
 __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global const float* xy, int first, int count,
                                     __global const int* cell_start, __global int* cell_count,
-                                    __global float4* sorted, __global uint* entries) {
+                                    __global float4* sorted, __global int* slot_of) {
   int k = get_global_id(0);
   if (k >= count) return;
-  FilmProjector c = film_projector(camera);
   float x = xy[2 * (first + k)], y = xy[2 * (first + k) + 1];
-  int cell = film_cell(&c, x, y);
+  int cell = firsthit_position_cell(camera, x, y);
   int slot = cell_start[cell] + atomic_dec(&cell_count[cell]) - 1;
   float3 d = camera_ray_dir(camera, x, y);
-  sorted[slot] = (float4)(d.x, d.y, d.z, as_float(k));
-  entries[2 * k] = 0xffffffffu;
-  entries[2 * k + 1] = 0xffffffffu;
+  sorted[slot] = (float4)(d.x, d.y, d.z, 0.0f);
+  slot_of[k] = slot;
 }
 
-/* The same result for positions already in pixel order, spp to a pixel (the
- * per-pixel sampling modes: sample g of the image lies in pixel g / spp): the
- * batch's own order is sorted, and the cell starts follow from the numbering. */
-__kernel void firsthit_pixel_major(__global const CameraGpu* camera, __global const float* xy, long first, int count,
-                                   int spp, int cells, __global int* cell_start, __global float4* sorted,
-                                   __global uint* entries) {
-  int k = get_global_id(0);
-  if (k <= cells) cell_start[k] = (int)clamp((long)k * spp - first, 0L, (long)count);
-  if (k >= count) return;
-  float3 d = camera_ray_dir(camera, xy[2 * (first + k)], xy[2 * (first + k) + 1]);
-  sorted[k] = (float4)(d.x, d.y, d.z, as_float(k));
-  entries[2 * k] = 0xffffffffu;
-  entries[2 * k + 1] = 0xffffffffu;
+/* Positions in pixel order, spp to a pixel (the per-pixel sampling modes:
+ * sample g of the image lies in pixel g / spp): the counts follow from the
+ * numbering, and the slots need no atomics. cells: the padded block grid's. */
+__kernel void firsthit_pixel_counts(int width, int height, long first, int count, int spp, int cells,
+                                    __global int* cell_count) {
+  int c = get_global_id(0);
+  if (c >= cells) return;
+  int2 xy = firsthit_cell_xy(c, width);
+  int n = 0;
+  if (xy.x < width && xy.y < height) {
+    long p = (long)xy.y * width + xy.x;
+    n = (int)(clamp((p + 1) * spp - first, 0L, (long)count) - clamp(p * spp - first, 0L, (long)count));
+  }
+  cell_count[c] = n;
+}
+
+/* One work-item per cell, writing its samples' slots in a row: slot writes go
+ * in order, and a sample's slot is known from its number alone
+ * (firsthit_pixel_slot), so nothing records it. */
+__kernel void firsthit_pixel_scatter(__global const CameraGpu* camera, __global const float* xy, long first, int cells,
+                                     int spp, __global const int* cell_start, __global float4* sorted) {
+  int c = get_global_id(0);
+  if (c >= cells) return;
+  int slot = cell_start[c], n = cell_start[c + 1] - slot;
+  if (n == 0) return;
+  int2 pixel = firsthit_cell_xy(c, camera->width);
+  long g = max(((long)pixel.y * camera->width + pixel.x) * spp, first);
+  for (int j = 0; j < n; ++j) {
+    float3 d = camera_ray_dir(camera, xy[2 * (g + j)], xy[2 * (g + j) + 1]);
+    sorted[slot + j] = (float4)(d.x, d.y, d.z, 0.0f);
+  }
+}
+
+inline int firsthit_pixel_slot(int width, long first, int spp, __global const int* cell_start, long g) {
+  long p = g / spp;
+  int cell = firsthit_cell((int)(p % width), (int)(p / width), width);
+  return cell_start[cell] + (int)(g - max(p * spp, first));
 }
 
 /* A plain triangle (no transform) is tested from its vertices; any other kind
@@ -128,15 +175,15 @@ __kernel void firsthit_emit(int items, __global const int4* cells, __global cons
   for (int b = 0; b < blocks; ++b) pairs[start + b] = (int2)(item, b);
 }
 
-inline void firsthit_keep(__global uint* entries, int sample, float t, int prim, int pass) {
+inline void firsthit_keep(__global uint* entries, int slot, float t, int prim, int pass) {
 #ifdef PRISM_ZBUFFER_WIDE
   ulong key = ((ulong)as_uint(t) << 32) | (ulong)(uint)prim;
-  atom_min((volatile __global ulong*)entries + sample, key);
+  atom_min((volatile __global ulong*)entries + slot, key);
 #else
   if (pass == 0)
-    atomic_min(&entries[2 * sample], as_uint(t));
-  else if (entries[2 * sample] == as_uint(t))
-    atomic_min(&entries[2 * sample + 1], (uint)prim);
+    atomic_min(&entries[2 * slot], as_uint(t));
+  else if (entries[2 * slot] == as_uint(t))
+    atomic_min(&entries[2 * slot + 1], (uint)prim);
 #endif
 }
 
@@ -158,39 +205,64 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, __global const O
   float3 o = load3g(camera->origin);
   float time = camera->shutter_open;
   __global const ObjectGpu* ob = &objects[prim];
-  /* Two loops, not one with a branch inside: the plain triangle's is short. */
+  /* Two loops, not one with a branch inside: the plain triangle's tests four
+   * samples at once, triangle_intersect_from lane by lane (the same operations
+   * in the same order, so the same bits; e2.qv is the same in every lane). */
   if (pair.x < prims) {
     TriangleFromOrigin tri = triangle_from_origin(o, load3g(ob->p), load3g(ob->p + 3), load3g(ob->p + 6));
+    const float e2_qv = tri_dot(tri.e2, tri.qv);
     for (int y = y0; y <= y1; ++y) {
-      int end = cell_start[y * width + x1 + 1];
-      for (int n = cell_start[y * width + x0]; n < end; ++n) {
-        float4 s = sorted[n];
-        float t, u, v;
-        if (triangle_intersect_from(&tri, (float3)(s.x, s.y, s.z), 0.0f, PRISM_INF, &t, &u, &v))
-          firsthit_keep(entries, as_int(s.w), t, prim, pass);
+      int end = cell_start[firsthit_cell(x1, y, width) + 1];
+      for (int n = cell_start[firsthit_cell(x0, y, width)]; n < end; n += 4) {
+        int last = end - 1;
+        float4 s0 = sorted[n], s1 = sorted[min(n + 1, last)], s2 = sorted[min(n + 2, last)],
+               s3 = sorted[min(n + 3, last)];
+        float4 dx = (float4)(s0.x, s1.x, s2.x, s3.x), dy = (float4)(s0.y, s1.y, s2.y, s3.y),
+               dz = (float4)(s0.z, s1.z, s2.z, s3.z);
+        float4 pvx = dy * tri.e2.z - dz * tri.e2.y;
+        float4 pvy = dz * tri.e2.x - dx * tri.e2.z;
+        float4 pvz = dx * tri.e2.y - dy * tri.e2.x;
+        float4 det = tri.e1.x * pvx + tri.e1.y * pvy + tri.e1.z * pvz;
+        float4 inv_det = 1.0f / det;
+        float4 u = (tri.tv.x * pvx + tri.tv.y * pvy + tri.tv.z * pvz) * inv_det;
+        float4 v = (dx * tri.qv.x + dy * tri.qv.y + dz * tri.qv.z) * inv_det;
+        float4 t = e2_qv * inv_det;
+        int4 ok = ((int4)(n) + (int4)(0, 1, 2, 3) < (int4)(end)) & (det != 0.0f) & (u >= 0.0f) & (u <= 1.0f) &
+                  (v >= 0.0f) & (u + v <= 1.0f) & (t > 0.0f) & (t < PRISM_INF);
+        if (!any(ok)) continue;
+        if (ok.s0) firsthit_keep(entries, n, t.s0, prim, pass);
+        if (ok.s1) firsthit_keep(entries, n + 1, t.s1, prim, pass);
+        if (ok.s2) firsthit_keep(entries, n + 2, t.s2, prim, pass);
+        if (ok.s3) firsthit_keep(entries, n + 3, t.s3, prim, pass);
       }
     }
   } else {
     for (int y = y0; y <= y1; ++y) {
-      int end = cell_start[y * width + x1 + 1];
-      for (int n = cell_start[y * width + x0]; n < end; ++n) {
+      int end = cell_start[firsthit_cell(x1, y, width) + 1];
+      for (int n = cell_start[firsthit_cell(x0, y, width)]; n < end; ++n) {
         float4 s = sorted[n];
         float t, u, v;
         if (object_intersect(ob, o, (float3)(s.x, s.y, s.z), time, 0.0f, PRISM_INF, &t, &u, &v))
-          firsthit_keep(entries, as_int(s.w), t, prim, pass);
+          firsthit_keep(entries, n, t, prim, pass);
       }
     }
   }
 }
 
-__kernel void firsthit_resolve(__global const CameraGpu* camera, __global const ObjectGpu* objects,
-                               __global const float* xy, int count, __global const uint* entries, int first,
-                               __global HitGpu* hits) {
+/* first: the chunk's first sample within the batch; spp > 0: the batch (whose
+ * first sample of the image is batch_first) came in pixel order, else slot_of
+ * has the slots. */
+__kernel void firsthit_resolve(__global const CameraGpu* camera, __global const ObjectGpu* objects, int count,
+                               int spp, long batch_first, __global const int* cell_start,
+                               __global const int* slot_of, __global const float4* sorted,
+                               __global const uint* entries, int first, __global HitGpu* hits) {
   int k = get_global_id(0);
   if (k >= count) return;
-  int prim = (int)entries[2 * (first + k) + 1];
+  int slot = spp > 0 ? firsthit_pixel_slot(camera->width, batch_first, spp, cell_start, batch_first + first + k)
+                     : slot_of[first + k];
+  int prim = (int)entries[2 * slot + 1];
 #ifdef PRISM_ZBUFFER_WIDE
-  prim = (int)(((__global const ulong*)entries)[first + k] & 0xffffffffu);
+  prim = (int)(((__global const ulong*)entries)[slot] & 0xffffffffu);
 #endif
   HitGpu hit;
   hit.t = PRISM_INF;
@@ -198,10 +270,10 @@ __kernel void firsthit_resolve(__global const CameraGpu* camera, __global const 
   hit.u = 0.0f;
   hit.v = 0.0f;
   if (prim >= 0) {
-    float3 o = load3g(camera->origin);
-    float3 d = camera_ray_dir(camera, xy[2 * k], xy[2 * k + 1]);
+    float4 s = sorted[slot];
     float t, u, v;
-    if (object_intersect(&objects[prim], o, d, camera->shutter_open, 0.0f, PRISM_INF, &t, &u, &v)) {
+    if (object_intersect(&objects[prim], load3g(camera->origin), (float3)(s.x, s.y, s.z), camera->shutter_open, 0.0f,
+                         PRISM_INF, &t, &u, &v)) {
       hit.t = t;
       hit.prim = prim;
       hit.u = u;

@@ -36,7 +36,8 @@ void FirstHitPass::prepare(const GpuScene& scene) {
   if (scene.primitive_count < scene.objects.size()) options += std::string(" ") + kMotionKernelOption;
   m_count_cells = m_context.kernel("firsthit.cl", "firsthit_count_cells", options);
   m_sort_samples = m_context.kernel("firsthit.cl", "firsthit_sort_samples", options);
-  m_pixel_major = m_context.kernel("firsthit.cl", "firsthit_pixel_major", options);
+  m_pixel_counts = m_context.kernel("firsthit.cl", "firsthit_pixel_counts", options);
+  m_pixel_scatter = m_context.kernel("firsthit.cl", "firsthit_pixel_scatter", options);
   m_bound = m_context.kernel("firsthit.cl", "firsthit_bound", options);
   m_emit = m_context.kernel("firsthit.cl", "firsthit_emit", options);
   m_raster = m_context.kernel("firsthit.cl", "firsthit_raster", options);
@@ -68,7 +69,7 @@ void FirstHitPass::prepare(const GpuScene& scene) {
 
   m_width = c.width;
   m_height = c.height;
-  const size_t cells = static_cast<size_t>(m_width) * m_height;
+  const size_t cells = cellCount();
   m_cell_count = Buffer(m_context, cells * sizeof(std::int32_t));
   const std::int32_t zero = 0;
   m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));  // each batch leaves it zero again
@@ -89,23 +90,34 @@ void FirstHitPass::rasterize(const Buffer& objects, const Buffer& xy, size_t fir
   if (first + count > static_cast<size_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::invalid_argument("first hit zbuffer: more than 2^31 - 1 positions in one batch");
   const cl_int n = static_cast<cl_int>(count), at = static_cast<cl_int>(first);
-  const size_t cells = static_cast<size_t>(m_width) * m_height;
+  const size_t cells = cellCount();
 
-  // The samples sorted by film pixel.
+  // The samples in cell order (kernels/firsthit.cl).
   m_sorted.reserve(m_context, count * 4 * sizeof(float));
+  if (pixel_spp <= 0) m_slot_of.reserve(m_context, count * sizeof(std::int32_t));
   m_entries.reserve(m_context, count * 2 * sizeof(std::uint32_t));
   if (pixel_spp > 0) {
-    m_context.launch(m_pixel_major)
-        .arg(m_camera)
-        .arg(xy)
+    m_context.launch(m_pixel_counts)
+        .arg(static_cast<cl_int>(m_width))
+        .arg(static_cast<cl_int>(m_height))
         .arg(static_cast<cl_long>(first))
         .arg(n)
         .arg(static_cast<cl_int>(pixel_spp))
         .arg(static_cast<cl_int>(cells))
+        .arg(m_cell_count)
+        .run(cells);
+    m_scan.exclusive(m_cell_count, cells, m_cell_start);
+    const std::int32_t zero = 0;
+    m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));  // as the sort path leaves it
+    m_context.launch(m_pixel_scatter)
+        .arg(m_camera)
+        .arg(xy)
+        .arg(static_cast<cl_long>(first))
+        .arg(static_cast<cl_int>(cells))
+        .arg(static_cast<cl_int>(pixel_spp))
         .arg(m_cell_start)
         .arg(m_sorted)
-        .arg(m_entries)
-        .run(std::max(count, cells + 1));
+        .run(cells);
   } else {
     m_context.launch(m_count_cells).arg(m_camera).arg(xy).arg(at).arg(n).arg(m_cell_count).run(count);
     m_scan.exclusive(m_cell_count, cells, m_cell_start);
@@ -117,9 +129,13 @@ void FirstHitPass::rasterize(const Buffer& objects, const Buffer& xy, size_t fir
         .arg(m_cell_start)
         .arg(m_cell_count)
         .arg(m_sorted)
-        .arg(m_entries)
+        .arg(m_slot_of)
         .run(count);
   }
+  const std::uint32_t empty = 0xffffffffu;
+  m_entries.fill(&empty, sizeof empty, count * 2 * sizeof(std::uint32_t));
+  m_pixel_spp = pixel_spp;
+  m_batch_first = first;
 
   // The primitives' film bounds and their (primitive, block) pairs.
   const size_t items = m_prims + m_others;
@@ -161,28 +177,38 @@ void FirstHitPass::rasterize(const Buffer& objects, const Buffer& xy, size_t fir
         .run(static_cast<size_t>(total));
 }
 
-void FirstHitPass::resolve(const Buffer& objects, const Buffer& chunk_xy, size_t first, size_t count, Buffer& hits) {
+void FirstHitPass::resolve(const Buffer& objects, size_t first, size_t count, Buffer& hits) {
   if (count == 0) return;
   if (first + count > m_batch) throw std::logic_error("FirstHitPass::resolve outside the rasterised batch");
   m_context.launch(m_resolve)
       .arg(m_camera)
       .arg(objects)
-      .arg(chunk_xy)
       .arg(static_cast<cl_int>(count))
+      .arg(static_cast<cl_int>(m_pixel_spp))
+      .arg(static_cast<cl_long>(m_batch_first))
+      .arg(m_cell_start)
+      .arg(m_slot_of)
+      .arg(m_sorted)
       .arg(m_entries)
       .arg(static_cast<cl_int>(first))
       .arg(hits)
       .run(count);
 }
 
+size_t FirstHitPass::cellCount() const {
+  constexpr size_t kBlock = 8;  // FIRSTHIT_BLOCK
+  return (static_cast<size_t>(m_width) + kBlock - 1) / kBlock * ((static_cast<size_t>(m_height) + kBlock - 1) / kBlock) *
+         kBlock * kBlock;
+}
+
 void FirstHitPass::run(const Buffer& objects, const Buffer& xy, size_t count, Buffer& hits, int pixel_spp) {
   rasterize(objects, xy, 0, count, pixel_spp);
-  resolve(objects, xy, 0, count, hits);
+  resolve(objects, 0, count, hits);
 }
 
 size_t FirstHitPass::deviceBytes() const {
   size_t bytes = 0;
-  for (const Buffer* b : {&m_camera, &m_other_prims, &m_other_boxes, &m_cell_count, &m_cell_start, &m_sorted,
+  for (const Buffer* b : {&m_camera, &m_other_prims, &m_other_boxes, &m_cell_count, &m_cell_start, &m_sorted, &m_slot_of,
                           &m_entries, &m_cells, &m_block_count, &m_pair_start, &m_pairs})
     bytes += b->bytes();
   return bytes;

@@ -46,9 +46,8 @@ class FirstHitPass {
   // positions are in pixel order, pixel_spp to a pixel (position k in pixel
   // k / pixel_spp, row by row), which spares sorting them; 0: any order.
   void rasterize(const Buffer& objects, const Buffer& xy, std::size_t first, std::size_t count, int pixel_spp = 0);
-  // hits[k] for positions first + k, k < count, of the last batch; `chunk_xy`
-  // holds those positions from index 0.
-  void resolve(const Buffer& objects, const Buffer& chunk_xy, std::size_t first, std::size_t count, Buffer& hits);
+  // hits[k] for positions first + k, k < count, of the last batch.
+  void resolve(const Buffer& objects, std::size_t first, std::size_t count, Buffer& hits);
   // rasterize, then resolve the whole batch.
   void run(const Buffer& objects, const Buffer& xy, std::size_t count, Buffer& hits, int pixel_spp = 0);
 
@@ -60,13 +59,18 @@ class FirstHitPass {
   Context& m_context;
   ZBufferAtomics m_atomics;
   DeviceScan m_scan;
-  cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_major = nullptr, m_bound = nullptr, m_emit = nullptr,
+  cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_counts = nullptr,
+            m_pixel_scatter = nullptr, m_bound = nullptr, m_emit = nullptr,
             m_raster = nullptr, m_resolve = nullptr;
   bool m_wide = false;
   int m_width = 0, m_height = 0;
-  std::size_t m_prims = 0, m_others = 0, m_batch = 0;
+  std::size_t m_prims = 0, m_others = 0, m_batch = 0, m_batch_first = 0;
+  int m_pixel_spp = 0;  // the last batch's pixel_spp
   FirstHitStats m_stats;
-  Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_sorted, m_entries, m_cells,
+  // Cells of the film's 8x8 blocks, the last row and column of blocks padded.
+  std::size_t cellCount() const;
+
+  Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_sorted, m_slot_of, m_entries, m_cells,
       m_block_count, m_pair_start, m_pairs;
 };
 

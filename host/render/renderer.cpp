@@ -337,7 +337,7 @@ void Renderer::traceChunk(int first_key, size_t n) {
       .run(n);
   m_stats->rays_by_kind[RAY_KIND_PRIMARY] += n;
   m_stats->waves = std::max(m_stats->waves, 1);
-  if (m_zbuffer) m_firsthit->resolve(m_objects, m_chunk_xy, m_zbuffer_first, n, m_hits);
+  if (m_zbuffer) m_firsthit->resolve(m_objects, m_zbuffer_first, n, m_hits);
   traceSlice(0, n, m_zbuffer);
 }
 

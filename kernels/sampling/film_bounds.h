@@ -98,11 +98,4 @@ inline int film_hull_cells(const FilmProjector* c, const FilmHull* h, int4* cell
   return FILM_BOUNDS_FINITE;
 }
 
-/* The film pixel a sample position belongs to (positions on the film's far
- * edges, x = W or y = H, to the last pixel). */
-inline int film_cell(const FilmProjector* c, float x, float y) {
-  int cx = (int)floor(clamp(x, 0.0f, c->w - 1.0f)), cy = (int)floor(clamp(y, 0.0f, c->h - 1.0f));
-  return cy * (int)c->w + cx;
-}
-
 #endif
