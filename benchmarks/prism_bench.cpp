@@ -13,6 +13,7 @@
 #include "accel_bench.h"
 #include "distributed_bench.h"  // prism-bench distributed: parses its own options
 #include "firsthit_bench.h"  // prism-bench firsthit: parses its own options
+#include "povray_bench.h"    // prism-bench povray: parses its own options
 
 namespace {
 
@@ -20,6 +21,7 @@ const char* kUsage =
     "usage: prism-bench accel [options] [FILES...]\n"
     "       prism-bench firsthit [options] [FILES...]   (see prism-bench firsthit --help)\n"
     "       prism-bench distributed [options]          (see prism-bench distributed --help)\n"
+    "       prism-bench povray [options]               (see prism-bench povray --help)\n"
     "\n"
     "Builds each acceleration structure over each scene and traces the same rays\n"
     "through it and through Intel Embree (rtcIntersect1, as many threads as the\n"
@@ -78,7 +80,9 @@ int main(int argc, char** argv) {
   }
   if (args[0] == "firsthit") return prism::bench::firstHitMain(args);
   if (args[0] == "distributed") return prism::bench::distributedMain(args);
-  if (args[0] != "accel") usageError("unknown command '" + args[0] + "' (expected accel, firsthit or distributed)");
+  if (args[0] == "povray") return prism::bench::povrayMain(args);
+  if (args[0] != "accel")
+    usageError("unknown command '" + args[0] + "' (expected accel, firsthit, distributed or povray)");
   prism::bench::AccelBenchOptions options;
   options.data_dir = PRISM_SOURCE_DIR "/../shared/data/meshes";
   options.command = "prism-bench";

@@ -11,6 +11,7 @@ packages=(
   catch2 nlohmann-json3-dev
   libtinyobjloader-dev libgmp-dev libmpfr-dev libboost-dev
   libembree-dev            # benchmarks only: the reference column of prism-bench
+  povray                   # benchmarks only: prism-bench povray
   clang libclang-rt-14-dev # fuzz targets (libFuzzer with ASan/UBSan)
   bc
 )

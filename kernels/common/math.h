@@ -33,6 +33,14 @@ inline float3 load3(const float* p) { return (float3)(p[0], p[1], p[2]); }
 inline float3 load3g(__global const float* p) { return (float3)(p[0], p[1], p[2]); }
 inline float max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
 
+/* x^y for x > 0 and finite y, as exp2(y log2 x). PoCL's pow takes its slow,
+ * exact path on every call: in the Whitted scene the specular highlight's pow
+ * was three quarters of spawn_shadows' time (80 ms of 0.33 s at 640x480; 22 ms
+ * with this). From OpenCL's 3-ulp log2 and exp2, the relative error is at most
+ * (3.5 |y log2 x| ln 2 + 3) float ulps: under 2e-5 wherever the result is a
+ * normal float (tests/kernels/math_test.cpp holds it to that against double pow). */
+inline float pow_positive(float x, float y) { return exp2(y * log2(x)); }
+
 /* Offset that moves a secondary ray's origin off the surface it leaves; scaled by
  * the point's magnitude because float spacing grows with it. */
 inline float surface_epsilon(float3 p) { return 1e-4f * fmax(1.0f, max3(fabs(p))); }

@@ -3,6 +3,7 @@
 #ifndef PRISM_SHADING_LOCAL_H
 #define PRISM_SHADING_LOCAL_H
 
+#include "common/math.h"
 #include "shading/optics.h"
 #include "shared/material_gpu.h"
 
@@ -16,7 +17,7 @@ inline float3 local_light_term(__global const MaterialGpu* m, float3 kd, float3 
   } else {
     spec_base = dot(reflect_dir(-l, n), v);
   }
-  float spec = spec_base > 0.0f ? pow(spec_base, m->shininess) : 0.0f;
+  float spec = spec_base > 0.0f ? pow_positive(spec_base, m->shininess) : 0.0f;
   return kd * n_dot_l + load3g(m->specular) * spec;
 }
 

@@ -15,7 +15,7 @@
 /* A unit direction from the density (n + 1) / (2 pi) cos^n(theta) around unit
  * `axis` (theta measured from it), for u in [0, 1)^2. */
 inline float3 sample_phong_lobe(float3 axis, float exponent, float2 u) {
-  float cos_t = pow(1.0f - u.x, 1.0f / (exponent + 1.0f));
+  float cos_t = pow_positive(1.0f - u.x, 1.0f / (exponent + 1.0f)) /* 1 - u.x > 0 */;
   float sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
   float phi = 2.0f * PRISM_PI * u.y;
   float3 t, b;
