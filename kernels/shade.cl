@@ -1,15 +1,24 @@
-/* shade: the local model's ambient part at each ray's hit, and what the hit
- * spawns.
- *   - emit[k]: the ray's ambient term, the background on a miss, or the radiance
- *     of an area light it meets before any object; weighted;
- *   - surfaces[k]: the shaded point, from which spawn_shadows sends the shadow
- *     feelers (the same number per ray, DESIGN.md), or no surface;
+/* shade: the local model at each ray's hit, and what the hit spawns.
+ *   - emit[k]: the ray's ambient term plus the light its point lights bring
+ *     through their shadow feelers (Whitted's feelers: one per point light in
+ *     front of the surface, traced here, attenuated by semitransparent objects),
+ *     the background on a miss, or the radiance of an area light it meets before
+ *     any object; weighted;
+ *   - surfaces[k] (scenes with area lights): the shaded point, from which
+ *     spawn_shadows sends the area lights' sampled feelers, or no surface;
  *   - children[2k], children[2k+1]: the reflected and the refracted ray, their
  *     directions sampled from the material's lobes (shading/material.h), each
  *     with weight = parent weight x coefficient, or empty slots when the branch
- *     ends (max depth reached, coefficient zero, weight under min_weight).
+ *     ends (max depth reached, coefficient zero, weight under min_weight);
+ *     children[2k].feelers: how many point-light feelers were traced, for the
+ *     statistics (count_rays).
+ * Point-light feelers are traced in place rather than queued: each is one
+ * deterministic ray per light, and a queue would move 80 bytes per feeler
+ * through four more kernels (on PoCL that was a third of a Whitted render).
  * Primary rays with an AOV pixel (ray.aov_pixel >= 0, one sample per pixel
- * chosen by the sampler) also write that pixel's AOVs. */
+ * chosen by the sampler) also write that pixel's AOVs. The program is built
+ * with the acceleration structure's options (kernels/accel/accel.h). */
+#include "accel/accel.h"
 #include "geometry/object.h"
 #include "sampling/dimensions.h"
 #include "shading/light.h"
@@ -40,6 +49,11 @@ inline ContributionGpu contribution(float3 c, float a, int pixel) {
 
 inline void put4(__global float* dst, float3 v, float w) { vstore4((float4)(v, w), 0, dst); }
 
+inline void write_children(__global RayGpu* children, int k, RayGpu reflected, RayGpu refracted) {
+  children[2 * k] = reflected;
+  children[2 * k + 1] = refracted;
+}
+
 /* The 2-D sample of one lobe of the ray's hit; nothing to draw without lobes. */
 inline float2 lobe_sample(uint seed, int strata, RayGpu ray, int lobe) {
 #ifdef PRISM_LOBES
@@ -49,8 +63,8 @@ inline float2 lobe_sample(uint seed, int strata, RayGpu ray, int lobe) {
 #endif
 }
 
-__kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count,
-                    __global const ObjectGpu* objects, __global const MaterialGpu* materials,
+__kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count, ACCEL_PARAMS,
+                    __global const MaterialGpu* materials,
                     __global const LightGpu* lights, int light_count, float4 ambient,
                     float4 background, int max_depth, float min_weight, uint seed, int strata,
                     __global ContributionGpu* emit, __global RayGpu* children, __global SurfaceGpu* surfaces,
@@ -65,12 +79,9 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   bool writes_aovs = primary && ray.aov_pixel >= 0;
   float3 o = ray_origin(ray), d = ray_dir(ray);
 
-  children[2 * k] = ray_empty();
-  children[2 * k + 1] = ray_empty();
-  surfaces[k].material = -1;
-
   /* An area light in front of the hit (or of nothing) is what the ray sees. */
 #ifdef PRISM_AREA_LIGHTS /* built for scenes with area lights (host: kernelFeatures) */
+  surfaces[k].material = -1;
   {
     float t_light = hit.prim < 0 ? PRISM_INF : hit.t;
     int seen = -1;
@@ -82,6 +93,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
       }
     }
     if (seen >= 0) {
+      write_children(children, k, ray_empty(), ray_empty());
       emit[k] = contribution(weight * load3g(lights[seen].color), primary ? 1.0f : 0.0f, ray.pixel);
       if (writes_aovs)
         write_aovs(ray.aov_pixel, t_light, (float3)(0.0f), -1, (float3)(0.0f), aov_depth, aov_normal, aov_primid,
@@ -92,6 +104,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
 #endif
 
   if (hit.prim < 0) {
+    write_children(children, k, ray_empty(), ray_empty());
     emit[k] = contribution(weight * background.xyz, 0.0f, ray.pixel);
     if (writes_aovs)
       write_aovs(ray.aov_pixel, PRISM_INF, (float3)(0.0f), -1, (float3)(0.0f), aov_depth, aov_normal, aov_primid,
@@ -102,8 +115,8 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   __global const ObjectGpu* object = &objects[hit.prim];
   __global const MaterialGpu* m = &materials[object->material];
   float3 n;
-  float2 uv;
-  object_surface(object, o, d, ray.time, hit, &n, &uv);
+  float2 uv = (float2)(0.0f, 0.0f);
+  object_surface(object, o, d, ray.time, hit, m->texture != TEXTURE_NONE, &n, &uv);
   float3 p = o + hit.t * d;
   float3 i_dir = normalize(d);
   bool inside = dot(n, i_dir) > 0.0f;
@@ -114,9 +127,24 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   float eps = surface_epsilon(p);
   float3 p_out = p + eps * nf; /* just off the surface, on the viewer's side */
 
-  emit[k] = contribution(weight * load3g(m->ambient) * tex * ambient.xyz, primary ? 1.0f : 0.0f, ray.pixel);
   if (writes_aovs) write_aovs(ray.aov_pixel, hit.t, nf, hit.prim, kd, aov_depth, aov_normal, aov_primid, aov_albedo);
 
+  float3 light = load3g(m->ambient) * tex * ambient.xyz;
+  int feelers = 0;
+  for (int l = 0; l < light_count; ++l) {
+    __global const LightGpu* source = &lights[l];
+    if (source->type != LIGHT_POINT) continue; /* sampled by spawn_shadows */
+    float3 ldir, scale;
+    float dist;
+    light_sample(source, p_out, (float2)(0.0f, 0.0f), &ldir, &dist, &scale);
+    if (dot(nf, ldir) <= 0.0f) continue; /* the light is behind the surface */
+    ++feelers;
+    float3 brought = scale * local_light_term(m, kd, nf, ldir, v);
+    light += brought * accel_transmittance(ACCEL_ARGS, materials, p_out, ldir, ray.time, 0.0f, dist);
+  }
+  emit[k] = contribution(weight * light, primary ? 1.0f : 0.0f, ray.pixel);
+
+#ifdef PRISM_AREA_LIGHTS
   __global SurfaceGpu* s = &surfaces[k];
   put4(s->p, p_out, ray.time);
   put4(s->n, nf, 0.0f);
@@ -129,30 +157,36 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   s->strata_id = ray.strata_id;
   s->dim = ray.dim;
   s->depth = ray.depth;
+#endif
 
-  if (ray.depth >= max_depth) return;
-  int child_dim = dim_children(ray.dim, light_count);
-  float k_reflect = m->reflect;
-  if (m->transmit > 0.0f) {
-    float eta = inside ? m->ior : 1.0f / m->ior;
-    float3 t_dir;
-    if (refract_dir(i_dir, nf, eta, &t_dir)) {
-      float3 w = weight * m->transmit;
-      if (max3(w) >= min_weight) {
-        float2 u = lobe_sample(seed, strata, ray, DIM_TRANSMIT_LOBE);
-        children[2 * k + 1] = ray_child(ray, p - eps * nf, material_transmit_dir(m, t_dir, nf, u), PRISM_INF, w,
-                                        ray.depth + 1, RAY_KIND_REFRACTED, child_dim);
+  RayGpu reflected = ray_empty(), refracted = ray_empty();
+  reflected.feelers = feelers;
+  if (ray.depth < max_depth) {
+    int child_dim = dim_children(ray.dim, light_count);
+    float k_reflect = m->reflect;
+    if (m->transmit > 0.0f) {
+      float eta = inside ? m->ior : 1.0f / m->ior;
+      float3 t_dir;
+      if (refract_dir(i_dir, nf, eta, &t_dir)) {
+        float3 w = weight * m->transmit;
+        if (max3(w) >= min_weight) {
+          float2 u = lobe_sample(seed, strata, ray, DIM_TRANSMIT_LOBE);
+          refracted = ray_child(ray, p - eps * nf, material_transmit_dir(m, t_dir, nf, u), PRISM_INF, w,
+                                ray.depth + 1, RAY_KIND_REFRACTED, child_dim);
+        }
+      } else {
+        k_reflect += m->transmit; /* total internal reflection: what would pass is reflected */
       }
-    } else {
-      k_reflect += m->transmit; /* total internal reflection: what would pass is reflected */
+    }
+    if (k_reflect > 0.0f) {
+      float3 w = weight * k_reflect;
+      if (max3(w) >= min_weight) {
+        float2 u = lobe_sample(seed, strata, ray, DIM_REFLECT_LOBE);
+        reflected = ray_child(ray, p_out, material_reflect_dir(m, i_dir, nf, u), PRISM_INF, w, ray.depth + 1,
+                              RAY_KIND_REFLECTED, child_dim);
+        reflected.feelers = feelers;
+      }
     }
   }
-  if (k_reflect > 0.0f) {
-    float3 w = weight * k_reflect;
-    if (max3(w) >= min_weight) {
-      float2 u = lobe_sample(seed, strata, ray, DIM_REFLECT_LOBE);
-      children[2 * k] = ray_child(ray, p_out, material_reflect_dir(m, i_dir, nf, u), PRISM_INF, w, ray.depth + 1,
-                                  RAY_KIND_REFLECTED, child_dim);
-    }
-  }
+  write_children(children, k, reflected, refracted);
 }

@@ -1,7 +1,7 @@
-/* spawn_shadows: the shadow feelers of a run of shaded points. Every point has
- * `per_surface` slots, light after light, `samples` of light l each (the
- * host's light table gives the first slot of each light); slot j of point k is
- * slot first_slot + j of the launch. A feeler goes to a point the light samples
+/* spawn_shadows: the area lights' shadow feelers of a run of shaded points
+ * (point lights' feelers are traced by shade). Every point has `per_surface`
+ * slots, area light after area light, `samples` of light l each; slot j of
+ * point k is slot first_slot + j of the launch. A feeler goes to a point the light samples
  * (shading/light.h, its 2-D sample from the path's dimension for that light)
  * and carries the light it would bring: the local model's term for that
  * direction times what the light sends. Empty slots (no surface, a light behind
@@ -24,8 +24,8 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
   shadows[j] = ray_empty();
   if (s->material < 0) return;
   int l = 0;
-  while (l + 1 < light_count && r >= lights[l].samples) {
-    r -= lights[l].samples;
+  while (l + 1 < light_count && r >= light_spawned_feelers(&lights[l])) {
+    r -= light_spawned_feelers(&lights[l]);
     ++l;
   }
   __global const LightGpu* light = &lights[l];

@@ -16,6 +16,9 @@ namespace prism {
 namespace {
 
 constexpr int kCompactBlock = 256;  // slots counted by one work-item of count_rays
+// What scan_blocks totals: the live rays of each kind, their sum, the feelers
+// shade traced (kernels/scan_blocks.cl).
+constexpr int kTotals = RAY_KIND_COUNT + 2;
 
 // Device bytes a sample takes: its rgba film entry and its (x, y) position.
 constexpr std::uint64_t kFilmBytesPerSample = 4 * sizeof(float);
@@ -31,16 +34,17 @@ std::string gib(double bytes) {
 
 // Build options naming the distributed features a scene uses (kernels/*.cl test
 // them with #ifdef).
+// (shade also takes the acceleration structure's options, which name moving
+// objects when there are some: it traces the point lights' feelers.)
 struct KernelFeatures {
   std::string camera;   // generate: a lens or a shutter interval
-  std::string shading;  // shade: moving objects, area lights, lobes
+  std::string shading;  // shade: area lights, lobes
   std::string shadows;  // spawn_shadows: area lights
 };
 
 KernelFeatures kernelFeatures(const Scene& scene, const GpuScene& gpu) {
   KernelFeatures f;
   if (!scene.camera.isPinhole()) f.camera = "-DPRISM_DISTRIBUTED_CAMERA";
-  if (gpu.primitive_count < gpu.objects.size()) f.shading += std::string(" ") + kMotionKernelOption;
   bool area = false, lobes = false;
   for (const LightGpu& l : gpu.lights) area = area || l.type != LIGHT_POINT;
   for (const MaterialGpu& m : gpu.materials) lobes = lobes || m.gloss > 0 || m.translucency > 0;
@@ -87,8 +91,6 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   // that use it, so a Whitted scene builds what it did before (PoCL compiles slowly).
   const KernelFeatures features = kernelFeatures(scene, gpu);
   m_generate = m_context.kernel("generate.cl", "generate", features.camera);
-  m_shade = m_context.kernel("shade.cl", "shade", features.shading);
-  m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shadows);
   RenderResult result;
   result.width = options.width;
   result.height = options.height;
@@ -102,8 +104,9 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_spp = sampling.spp;
   m_strata = sampling.mode == AaMode::Random ? 0 : sampling.spp;
   m_group_base = 0;
-  m_shadow_slots = 0;
-  for (const LightGpu& l : gpu.lights) m_shadow_slots += l.samples;
+  m_shadow_slots = 0;  // shade traces point lights' feelers itself
+  for (const LightGpu& l : gpu.lights)
+    if (l.type != LIGHT_POINT) m_shadow_slots += l.samples;
   if (options.profile) m_context.profile().start();
   struct Reset {
     Renderer* r;
@@ -126,7 +129,11 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
     result.stats.accel = options.accel;
     result.stats.accel_stats = accel->stats;
     m_extend = m_context.kernel("extend.cl", "extend", accel->kernel_options);
-    m_occlude = m_context.kernel("occlude.cl", "occlude", accel->kernel_options);
+    m_shade = m_context.kernel("shade.cl", "shade", accel->kernel_options + features.shading);
+    if (m_shadow_slots > 0) {
+      m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shadows);
+      m_occlude = m_context.kernel("occlude.cl", "occlude", accel->kernel_options);
+    }
   }
   if (m_zbuffer) {
     if (!m_firsthit) m_firsthit = std::make_unique<FirstHitPass>(m_context);
@@ -148,7 +155,8 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_hits.reserve(m_context, kSliceRays * sizeof(HitGpu));
   m_emit.reserve(m_context, kSliceRays * sizeof(ContributionGpu));
   m_children.reserve(m_context, 2 * kSliceRays * sizeof(RayGpu));
-  m_surfaces.reserve(m_context, kSliceRays * sizeof(SurfaceGpu));
+  // Shaded points are kept only for area lights' feelers (a buffer cannot be empty).
+  m_surfaces.reserve(m_context, (m_shadow_slots > 0 ? kSliceRays : 1) * sizeof(SurfaceGpu));
   if (m_shadow_slots > 0) {
     const size_t slots = std::min(kShadowSlots, kSliceRays * m_shadow_slots);
     m_shadows.reserve(m_context, slots * sizeof(RayGpu));
@@ -156,9 +164,9 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
     m_shadow_light.reserve(m_context, slots * sizeof(ContributionGpu));
   }
   const size_t max_blocks = (std::max(2 * kSliceRays, kShadowSlots) + kCompactBlock - 1) / kCompactBlock;
-  m_counts.reserve(m_context, max_blocks * RAY_KIND_COUNT * sizeof(std::int32_t));
+  m_counts.reserve(m_context, max_blocks * RAY_COUNT_COLUMNS * sizeof(std::int32_t));
   m_offsets.reserve(m_context, max_blocks * sizeof(std::int32_t));
-  m_totals.reserve(m_context, (RAY_KIND_COUNT + 1) * sizeof(std::int32_t));
+  m_totals.reserve(m_context, kTotals * sizeof(std::int32_t));
   m_chunk_xy.reserve(m_context, kSliceRays * 2 * sizeof(float));
   m_chunk_aov.reserve(m_context, kSliceRays * sizeof(std::int32_t));
 
@@ -368,11 +376,9 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
     ambient.s[i] = m_scene->ambient[i];
     background.s[i] = m_scene->background[i];
   }
-  m_context.launch(m_shade)
-      .arg(m_work)
-      .arg(m_hits)
-      .arg(static_cast<int>(n))
-      .arg(m_objects)
+  KernelLaunch shade = m_context.launch(m_shade);
+  shade.arg(m_work).arg(m_hits).arg(static_cast<int>(n));
+  m_accel.bind(shade, m_objects, object_count)
       .arg(m_materials)
       .arg(m_lights)
       .arg(light_count)
@@ -394,7 +400,12 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
 
   if (m_shadow_slots > 0) traceShadows(n);
 
-  if (depth >= opt.max_depth) return;
+  // At the last depth the children's slots are all empty, but they still hold
+  // the count of point-light feelers.
+  if (depth >= opt.max_depth) {
+    countRays(m_children, 2 * n, m_stats->rays_by_kind);
+    return;
+  }
   size_t child_count = compact(m_children, 2 * n, m_levels[depth + 1], m_stats->rays_by_kind);
   if (child_count > 0) traceLevel(depth + 1, child_count);
 }
@@ -426,15 +437,21 @@ void Renderer::traceShadows(size_t surfaces) {
   }
 }
 
-size_t Renderer::compact(const Buffer& in, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds) {
+size_t Renderer::countRays(const Buffer& in, size_t count, std::array<std::uint64_t, 4>& kinds) {
   const int blocks = static_cast<int>((count + kCompactBlock - 1) / kCompactBlock);
   m_context.launch(m_count).arg(in).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_counts).run(blocks);
   m_context.launch(m_scan).arg(m_counts).arg(blocks).arg(m_offsets).arg(m_totals).run(1);
-  std::int32_t totals[RAY_KIND_COUNT + 1];
+  std::int32_t totals[kTotals];
   m_totals.read(totals, sizeof totals);
   for (int k = 0; k < RAY_KIND_COUNT; ++k) kinds[k] += static_cast<std::uint64_t>(totals[k]);
-  const std::int32_t total = totals[RAY_KIND_COUNT];
+  kinds[RAY_KIND_SHADOW] += static_cast<std::uint64_t>(totals[RAY_KIND_COUNT + 1]);
+  return static_cast<size_t>(totals[RAY_KIND_COUNT]);
+}
+
+size_t Renderer::compact(const Buffer& in, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds) {
+  const size_t total = countRays(in, count, kinds);
   if (total == 0) return 0;
+  const int blocks = static_cast<int>((count + kCompactBlock - 1) / kCompactBlock);
   m_context.launch(m_scatter).arg(in).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_offsets).arg(out).run(blocks);
   return static_cast<size_t>(total);
 }

@@ -121,7 +121,10 @@ class Renderer {
   // Stable compaction of `in` (count slots) into `out`; returns the live count
   // and adds the live rays of each kind to `kinds`.
   size_t compact(const Buffer& in, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds);
-  // The shadow feelers of the slice's shaded points in m_surfaces: spawned in
+  // The first half of compact: adds the live rays of each kind (and the
+  // point-light feelers shade traced) to `kinds`; returns the live count.
+  size_t countRays(const Buffer& in, size_t count, std::array<std::uint64_t, 4>& kinds);
+  // The area lights' feelers of the slice's shaded points in m_surfaces: spawned in
   // runs, compacted, traced by occlude, their light added into m_film.
   void traceShadows(size_t surfaces);
   void accumulate(const Buffer& contributions, size_t count);
@@ -143,7 +146,7 @@ class Renderer {
   int m_spp = 1;           // samples per pixel of the per-pixel modes (1 otherwise)
   int m_strata = 1;        // samples that share strata in the sampler (0: independent, aa random)
   long long m_group_base = 0;  // adaptive: the batch's first position, so strata groups stay distinct
-  int m_shadow_slots = 0;  // shadow feelers per shaded point: the lights' samples summed
+  int m_shadow_slots = 0;  // spawned feelers per shaded point: the area lights' samples summed
   size_t m_film_batch_slices = 256;
   AccelBuildOptions m_accel_build;
   AccelBuffers m_accel;

@@ -128,8 +128,10 @@ PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* 
     PacketRay moved = moving_packet_ray(pk, r, o, d, objects);
     ok = packet_intersect(pk, &moved, tmin, *best, 1, &t, &u, &v);
     prim = select(prim, prim & (int4)(~PACKET_MOVING), prim >= 0); /* ids of the filled lanes */
-  } else {
+  } else if (any(prim >= 0)) {
     ok = packet_intersect(pk, r, tmin, *best, 1, &t, &u, &v);
+  } else { /* spheres, boxes or transformed objects only: no triangle to test */
+    ok = (int4)(0);
   }
   if (any(ok)) {
     float ta[4], ua[4], va[4];
@@ -212,8 +214,10 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
     PacketRay moved = moving_packet_ray(pk, r, o, d, objects);
     ok = packet_intersect(pk, &moved, tmin, tmax, 0, &t, &u, &v);
     prim = select(prim, prim & (int4)(~PACKET_MOVING), prim >= 0); /* ids of the filled lanes */
-  } else {
+  } else if (any(prim >= 0)) {
     ok = packet_intersect(pk, r, tmin, tmax, 0, &t, &u, &v);
+  } else { /* spheres, boxes or transformed objects only: no triangle to test */
+    ok = (int4)(0);
   }
   if (any(ok)) {
     int oka[4], pa[4];

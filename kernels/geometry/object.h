@@ -62,9 +62,10 @@ inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, f
   return false;
 }
 
-/* Geometric unit normal (outward for closed objects) and texture coordinates at
- * the hit of ray (o, d). */
-inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, float time, HitGpu hit,
+/* Geometric unit normal (outward for closed objects) and, when want_uv (a
+ * textured material), texture coordinates at the hit of ray (o, d); *uv is left
+ * as it is otherwise. */
+inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, float time, HitGpu hit, bool want_uv,
                            float3* normal, float2* uv) {
   float m[12];
   if (ob->has_transform) {
@@ -78,15 +79,15 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
   switch (ob->type) {
     case OBJECT_SPHERE:
       n = sphere_normal(p, load3g(q));
-      *uv = sphere_uv(n);
+      if (want_uv) *uv = sphere_uv(n); /* two inverse trigonometric functions */
       break;
     case OBJECT_BOX:
       n = box_normal(p, load3g(q), load3g(q + 3));
-      *uv = box_uv(p, n);
+      if (want_uv) *uv = box_uv(p, n);
       break;
     case OBJECT_PLANE:
       n = load3g(q + 3);
-      *uv = plane_uv(p, load3g(q), n);
+      if (want_uv) *uv = plane_uv(p, load3g(q), n);
       break;
     default:
       n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));

@@ -30,7 +30,7 @@ inline RayGpu ray_make(float3 o, float3 d, float tmin, float tmax, float3 w, int
   r.time = 0.0f;
   r.dim = 0;
   r.strata_id = 0;
-  r.pad = 0;
+  r.feelers = 0;
   return r;
 }
 

@@ -9,6 +9,10 @@
 #define RAY_KIND_REFRACTED 2
 #define RAY_KIND_SHADOW 3
 #define RAY_KIND_COUNT 4
+/* What count_rays records per block of a queue: the live rays of each kind,
+ * then the point-light feelers traced by shade (RayGpu.feelers). */
+#define RAY_COUNT_FEELERS RAY_KIND_COUNT
+#define RAY_COUNT_COLUMNS (RAY_KIND_COUNT + 1)
 
 typedef struct RayGpu {
   float ox, oy, oz, tmin;
@@ -33,7 +37,11 @@ typedef struct RayGpu {
   float time;
   int dim;
   int strata_id;
-  int pad;
+  /* In the reflected-ray slot shade writes for each ray it shades: the point
+   * lights' shadow feelers it traced at the hit (kernels/shade.cl), which
+   * count_rays counts as shadow rays whether or not the slot holds a ray;
+   * 0 everywhere else. */
+  int feelers;
 } RayGpu;
 
 #endif

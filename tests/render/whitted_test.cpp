@@ -168,6 +168,42 @@ TEST_CASE("adaptive depth control cuts rays whose weight falls under min_weight"
   CHECK(std::fabs(pixel(cut, 3, 7).x - 0.2 * (1 - std::pow(0.5, 4)) / 0.5) < 1e-5);
 }
 
+TEST_CASE("every hit sends one feeler per light in front of it, counted at every depth", "[render][depth]") {
+  // The two mirrors again, camera between them, so a primary ray hits the far
+  // mirror A (z = -1, depths 0, 2, ..., 10) and the near one B (z = 1, depths
+  // 1, ..., 9) in turn: 6 + 5 hits down to max_depth 10. Point lights P1, P2 at
+  // z = 0 face both mirrors; P3 at z = -2 is behind A and faces B only (A hides
+  // it, but its feeler is still sent). A quad light far to the side at z = 0,
+  // 3 samples, faces both: shade traces the point lights' feelers itself and
+  // spawn_shadows the quad's, and the statistics must count both kinds,
+  // including at the last depth, whose children are never traced.
+  const char* json = R"({
+    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 20},
+    "film": {"width": 16, "height": 12},
+    "render": {"max_depth": 10, "min_weight": 0, "background": [0, 0, 0]},
+    "materials": {"mirror": {"reflect": 0.5, "diffuse": [0.1, 0.1, 0.1]}},
+    "lights": [{"position": [0.2, 0.3, 0]}, {"position": [-0.4, 0.1, 0]}, {"position": [0, 0, -2]},
+               {"type": "quad", "corner": [20, -1, 0], "edge1": [1, 0, 0], "edge2": [0, 2, 0], "samples": 3}],
+    "objects": [{"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "mirror"},
+                {"type": "plane", "point": [0, 0, 1], "normal": [0, 0, -1], "material": "mirror"}]
+  })";
+  Scene scene = parseScene(json, "lit_mirrors.json");
+  RenderOptions opt = RenderOptions::fromScene(scene);
+  const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * opt.height;
+  for (FirstHitMode first_hit : {FirstHitMode::Trace, FirstHitMode::ZBuffer}) {
+    opt.first_hit = first_hit;
+    opt.min_weight = 0;
+    RenderResult full = renderScene(scene, opt);
+    CHECK(full.stats.rays_by_kind[RAY_KIND_REFLECTED] == 10 * pixels);
+    // Point lights: 2 x 11 hits + 5 hits on B; the quad: 3 x 11 hits.
+    CHECK(full.stats.rays_by_kind[RAY_KIND_SHADOW] == (2 * 11 + 5 + 3 * 11) * pixels);
+
+    opt.min_weight = 0.1;  // hits at depths 0 to 3 only: A twice, B twice
+    RenderResult cut = renderScene(scene, opt);
+    CHECK(cut.stats.rays_by_kind[RAY_KIND_SHADOW] == (2 * 4 + 2 + 3 * 4) * pixels);
+  }
+}
+
 TEST_CASE("the wavefront image matches the recursive double-precision tracer", "[render][reference]") {
   // Mirror and glass spheres in a box: reflection, refraction with total internal
   // reflection, shadows through glass, several bounces.
