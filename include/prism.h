@@ -223,16 +223,18 @@ PRISM_API PrismStatus prismGetPluginInfo(uint32_t index, PrismPluginCandidateInf
 
 /* ---- rendering ----------------------------------------------------------------- */
 
-/* Spatial index used for ray queries: a BVH (binned SAH, the default), an adaptive
- * octree, a BSP (SAH kd-) tree, or none (every ray against every primitive). */
+/* Spatial index used for ray queries: a BVH (binned SAH), an adaptive octree, a
+ * BSP (SAH kd-) tree, none (every ray against every primitive), or auto (the
+ * default: none for scenes of at most 4 primitives, the BVH above). */
 typedef enum PrismAccel {
   PRISM_ACCEL_BVH = 0,
   PRISM_ACCEL_OCTREE = 1,
   PRISM_ACCEL_BSP = 2,
-  PRISM_ACCEL_NONE = 3
+  PRISM_ACCEL_NONE = 3,
+  PRISM_ACCEL_AUTO = 4
 } PrismAccel;
 
-/* Parses "bvh", "octree", "bsp" or "none". */
+/* Parses "bvh", "octree", "bsp", "none" or "auto". */
 PRISM_API PrismStatus prismParseAccel(const char* name, PrismAccel* accel);
 /* The lower-case name of a structure ("bvh"), or NULL for an unknown value. */
 PRISM_API const char* prismAccelName(PrismAccel accel);
@@ -307,7 +309,7 @@ typedef struct PrismRenderStats {
   uint64_t shadow_rays;
   uint32_t waves;              /* deepest wave reached + 1 */
   uint64_t rays_per_depth[32]; /* camera + secondary rays traced at each depth (0 = primary) */
-  uint32_t accel;              /* the PrismAccel used */
+  uint32_t accel;              /* the PrismAccel used (never PRISM_ACCEL_AUTO: what it chose) */
   double accel_build_seconds;  /* building the spatial index on the host */
   double rays_per_pixel;       /* primary samples / pixels (about 2 for quincunx, >= 1 for adaptive) */
   uint32_t first_hit_used;     /* PRISM_FIRST_HIT_ZBUFFER or PRISM_FIRST_HIT_TRACE */

@@ -9,9 +9,10 @@
  *   - children[2k], children[2k+1]: the reflected and the refracted ray, their
  *     directions sampled from the material's lobes (shading/material.h), each
  *     with weight = parent weight x coefficient, or empty slots when the branch
- *     ends (max depth reached, coefficient zero, weight under min_weight);
- *     children[2k].feelers: how many point-light feelers were traced, for the
- *     statistics (count_rays).
+ *     ends (max depth reached, coefficient zero, weight under min_weight); only
+ *     filled slots are written;
+ *   - child_tags[2k], child_tags[2k+1]: the slots' tags (shared/ray_gpu.h);
+ *     the first also counts the point-light feelers traced, for the statistics.
  * Point-light feelers are traced in place rather than queued: each is one
  * deterministic ray per light, and a queue would move 80 bytes per feeler
  * through four more kernels (on PoCL that was a third of a Whitted render).
@@ -49,9 +50,18 @@ inline ContributionGpu contribution(float3 c, float a, int pixel) {
 
 inline void put4(__global float* dst, float3 v, float w) { vstore4((float4)(v, w), 0, dst); }
 
-inline void write_children(__global RayGpu* children, int k, RayGpu reflected, RayGpu refracted) {
-  children[2 * k] = reflected;
-  children[2 * k + 1] = refracted;
+/* The slots of ray k's children: each ray written only where it exists. */
+inline void write_children(__global RayGpu* children, __global int* tags, int k, const RayGpu* reflected,
+                           const RayGpu* refracted, int feelers) {
+  tags[2 * k] = SLOT_TAG(reflected->kind, feelers);
+  tags[2 * k + 1] = SLOT_TAG(refracted->kind, 0);
+  if (reflected->kind >= 0) children[2 * k] = *reflected;
+  if (refracted->kind >= 0) children[2 * k + 1] = *refracted;
+}
+
+inline void write_no_children(__global int* tags, int k) {
+  tags[2 * k] = SLOT_TAG(RAY_KIND_NONE, 0);
+  tags[2 * k + 1] = SLOT_TAG(RAY_KIND_NONE, 0);
 }
 
 /* The 2-D sample of one lobe of the ray's hit; nothing to draw without lobes. */
@@ -67,7 +77,8 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
                     __global const MaterialGpu* materials,
                     __global const LightGpu* lights, int light_count, float4 ambient,
                     float4 background, int max_depth, float min_weight, uint seed, int strata,
-                    __global ContributionGpu* emit, __global RayGpu* children, __global SurfaceGpu* surfaces,
+                    __global ContributionGpu* emit, __global RayGpu* children, __global int* child_tags,
+                    __global SurfaceGpu* surfaces,
                     __global float* aov_depth, __global float* aov_normal, __global int* aov_primid,
                     __global float* aov_albedo) {
   int k = get_global_id(0);
@@ -93,7 +104,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
       }
     }
     if (seen >= 0) {
-      write_children(children, k, ray_empty(), ray_empty());
+      write_no_children(child_tags, k);
       emit[k] = contribution(weight * load3g(lights[seen].color), primary ? 1.0f : 0.0f, ray.pixel);
       if (writes_aovs)
         write_aovs(ray.aov_pixel, t_light, (float3)(0.0f), -1, (float3)(0.0f), aov_depth, aov_normal, aov_primid,
@@ -104,7 +115,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
 #endif
 
   if (hit.prim < 0) {
-    write_children(children, k, ray_empty(), ray_empty());
+    write_no_children(child_tags, k);
     emit[k] = contribution(weight * background.xyz, 0.0f, ray.pixel);
     if (writes_aovs)
       write_aovs(ray.aov_pixel, PRISM_INF, (float3)(0.0f), -1, (float3)(0.0f), aov_depth, aov_normal, aov_primid,
@@ -159,8 +170,8 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   s->depth = ray.depth;
 #endif
 
-  RayGpu reflected = ray_empty(), refracted = ray_empty();
-  reflected.feelers = feelers;
+  RayGpu reflected, refracted;
+  reflected.kind = refracted.kind = RAY_KIND_NONE;
   if (ray.depth < max_depth) {
     int child_dim = dim_children(ray.dim, light_count);
     float k_reflect = m->reflect;
@@ -184,9 +195,8 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
         float2 u = lobe_sample(seed, strata, ray, DIM_REFLECT_LOBE);
         reflected = ray_child(ray, p_out, material_reflect_dir(m, i_dir, nf, u), PRISM_INF, w, ray.depth + 1,
                               RAY_KIND_REFLECTED, child_dim);
-        reflected.feelers = feelers;
       }
     }
   }
-  write_children(children, k, reflected, refracted);
+  write_children(children, child_tags, k, &reflected, &refracted, feelers);
 }

@@ -5,7 +5,7 @@
  * (shading/light.h, its 2-D sample from the path's dimension for that light)
  * and carries the light it would bring: the local model's term for that
  * direction times what the light sends. Empty slots (no surface, a light behind
- * it) are removed by compaction before occlude. */
+ * it) are only tagged, and compaction removes them before occlude. */
 #include "sampling/dimensions.h"
 #include "shading/light.h"
 #include "shading/material.h"
@@ -14,14 +14,15 @@
 
 __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot, int count, int per_surface,
                             __global const MaterialGpu* materials, __global const LightGpu* lights, int light_count,
-                            uint seed, int strata, __global RayGpu* shadows) {
+                            uint seed, int strata, __global RayGpu* shadows,
+                            __global int* tags) {
   int j = get_global_id(0);
   if (j >= count) return;
   long slot = first_slot + j;
   int k = (int)(slot / per_surface);
   int r = (int)(slot % per_surface);
   __global const SurfaceGpu* s = &surfaces[k];
-  shadows[j] = ray_empty();
+  tags[j] = SLOT_TAG(RAY_KIND_NONE, 0);
   if (s->material < 0) return;
   int l = 0;
   while (l + 1 < light_count && r >= light_spawned_feelers(&lights[l])) {
@@ -50,4 +51,5 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
   ray.time = s->p[3];
   ray.strata_id = s->strata_id;
   shadows[j] = ray;
+  tags[j] = SLOT_TAG(RAY_KIND_SHADOW, 0);
 }

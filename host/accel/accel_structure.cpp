@@ -25,6 +25,7 @@ const AccelEntry kAccels[] = {
     {AccelKind::Octree, "octree", buildOctree},
     {AccelKind::Bsp, "bsp", buildBsp},
     {AccelKind::None, "none", buildNone},
+    {AccelKind::Auto, "auto", nullptr},  // resolved before building
 };
 
 const AccelEntry& entry(AccelKind kind) {
@@ -83,8 +84,14 @@ void finishReferenceStats(const std::vector<int>& refs_per_prim, AccelStats& sta
   stats.mean_prims_per_leaf = stats.leaf_count ? double(refs) / double(stats.leaf_count) : 0.0;
 }
 
+AccelKind resolveAccelKind(AccelKind kind, const std::vector<ObjectGpu>& objects) {
+  if (kind != AccelKind::Auto) return kind;
+  return primitiveCount(objects) <= kAutoBruteForcePrimitives ? AccelKind::None : AccelKind::Bvh;
+}
+
 std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<ObjectGpu>& objects,
                                         const AccelBuildOptions& options) {
+  kind = resolveAccelKind(kind, objects);
   const AccelEntry& e = entry(kind);
   auto start = std::chrono::steady_clock::now();
   auto accel = std::make_unique<DeviceAccel>();

@@ -16,11 +16,12 @@
 
 namespace prism {
 
-enum class AccelKind { None, Bvh, Octree, Bsp };
+// Auto stands for one of the others, chosen per scene by resolveAccelKind.
+enum class AccelKind { None, Bvh, Octree, Bsp, Auto };
 
-// Every kind, in the order the benchmark and the tests list them.
+// Every structure (Auto is none), in the order the benchmark and the tests list them.
 const std::vector<AccelKind>& allAccelKinds();
-// "none", "bvh", "octree", "bsp".
+// "none", "bvh", "octree", "bsp", "auto".
 const char* accelName(AccelKind kind);
 // The kind named `name`; throws std::invalid_argument naming the valid names.
 AccelKind parseAccelKind(const std::string& name);
@@ -95,7 +96,17 @@ struct AccelBuildOptions {
   bool bvh_linear_bounds = true;
 };
 
-// Builds `kind` over `objects` (the flattened scene, one entry per primitive;
+// Scenes of at most this many primitives are traced by brute force under
+// `auto`: with a handful of objects, testing each costs less than any tree's
+// set-up and node tests (measured in docs/accel.md, "Small scenes").
+constexpr std::size_t kAutoBruteForcePrimitives = 4;
+
+// The structure `kind` stands for over `objects`: itself, or for Auto, none up
+// to kAutoBruteForcePrimitives primitives and the BVH above.
+AccelKind resolveAccelKind(AccelKind kind, const std::vector<ObjectGpu>& objects);
+
+// Builds `kind` (Auto resolved by resolveAccelKind; DeviceAccel::kind says
+// which) over `objects` (the flattened scene, one entry per primitive;
 // the index is the primitive id). Never fails on odd input: degenerate and
 // non-finite primitives are kept so every structure answers like `none`.
 std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<ObjectGpu>& objects,

@@ -14,7 +14,8 @@ struct AccelName {
   PrismAccel accel;
 };
 const AccelName kAccelNames[] = {
-    {"bvh", PRISM_ACCEL_BVH}, {"octree", PRISM_ACCEL_OCTREE}, {"bsp", PRISM_ACCEL_BSP}, {"none", PRISM_ACCEL_NONE}};
+    {"bvh", PRISM_ACCEL_BVH},   {"octree", PRISM_ACCEL_OCTREE}, {"bsp", PRISM_ACCEL_BSP},
+    {"none", PRISM_ACCEL_NONE}, {"auto", PRISM_ACCEL_AUTO}};
 
 Vec3 vec(const float* v) { return {v[0], v[1], v[2]}; }
 void put(float* dst, const Vec3& v) {
@@ -75,7 +76,7 @@ PRISM_API PrismStatus prismParseAccel(const char* name, PrismAccel* accel) {
       return PRISM_OK;
     }
   return fail(PRISM_ERROR_INVALID_ARGUMENT,
-              std::string("unknown acceleration structure '") + name + "' (expected bvh, octree, bsp or none)");
+              std::string("unknown acceleration structure '") + name + "' (expected auto, bvh, octree, bsp or none)");
 }
 
 PRISM_API const char* prismAccelName(PrismAccel accel) {

@@ -127,8 +127,10 @@ Camera (default: the scene's camera):
                        (default: the scene's, else the distance to the look-at point)
 
 Speed:
-  --accel A         spatial index for ray queries: bvh (default), octree, bsp, or
-                    none (every ray against every primitive)
+  --accel A         spatial index for ray queries: auto (default: none for scenes
+                    of at most 4 primitives, where a tree costs more than it
+                    saves, else bvh), bvh, octree, bsp, or none (every ray
+                    against every primitive)
   --first-hit M     how primary visibility is found: zbuffer (a first-hit pass over
                     screen tiles of primitives, no ray traversal), trace (primary
                     rays through the --accel structure), or auto (default: zbuffer
@@ -233,7 +235,8 @@ prismIntersect and prismOccluded).
                  vertices 1 and 2 (0 for analytic objects).
   --occluded     answer any-hit instead: t = 0 where something lies in
                  (tmin, tmax), +inf where nothing does; prim = -1, u = v = 0
-  --accel A      bvh (default), octree, bsp or none
+  --accel A      bvh (default), octree, bsp, none, or auto (none for at most 4
+                 primitives, else bvh)
   --device D     the OpenCL device, as for 'prism render'
   --no-cache     compile the kernels afresh
   --quiet        no summary line

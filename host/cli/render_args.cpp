@@ -127,7 +127,7 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
   if (const auto accel_name = parsed.text("--accel")) {
     PrismAccel accel;
     if (prismParseAccel(accel_name->c_str(), &accel) != PRISM_OK)
-      throw UsageError("--accel: unknown structure '" + *accel_name + "' (expected bvh, octree, bsp or none)");
+      throw UsageError("--accel: unknown structure '" + *accel_name + "' (expected auto, bvh, octree, bsp or none)");
     request.accel = accel;
   }
   if (const auto name = parsed.text("--aa")) {

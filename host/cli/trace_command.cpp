@@ -88,7 +88,7 @@ int runTrace(const std::vector<std::string>& args) {
   PrismAccel accel = PRISM_ACCEL_BVH;
   if (const auto name = parsed.text("--accel"))
     if (prismParseAccel(name->c_str(), &accel) != PRISM_OK)
-      throw UsageError("--accel: unknown structure '" + *name + "' (expected bvh, octree, bsp or none)");
+      throw UsageError("--accel: unknown structure '" + *name + "' (expected auto, bvh, octree, bsp or none)");
   const bool occlusion = parsed.has("--occluded");
 
   std::vector<PrismRay> rays;

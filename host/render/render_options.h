@@ -28,7 +28,7 @@ struct RenderOptions {
   int max_depth = 5;
   double min_weight = 0.01;
   std::uint64_t seed = 0;
-  AccelKind accel = AccelKind::Bvh;  // spatial index for extend / occlude
+  AccelKind accel = AccelKind::Auto;  // spatial index for extend / occlude (and shade's feelers)
   // Anti-aliasing (docs/sampling.md). No mode: none at spp 1, jitter above.
   std::optional<AaMode> aa;
   FilterKind filter = FilterKind::Box;  // quincunx always resolves with its tent, adaptive by area

@@ -126,7 +126,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   {
     std::unique_ptr<DeviceAccel> accel = buildAccel(options.accel, gpu.objects, m_accel_build);
     m_accel.upload(m_context, *accel);
-    result.stats.accel = options.accel;
+    result.stats.accel = accel->kind;  // what auto chose
     result.stats.accel_stats = accel->stats;
     m_extend = m_context.kernel("extend.cl", "extend", accel->kernel_options);
     m_shade = m_context.kernel("shade.cl", "shade", accel->kernel_options + features.shading);
@@ -155,11 +155,13 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_hits.reserve(m_context, kSliceRays * sizeof(HitGpu));
   m_emit.reserve(m_context, kSliceRays * sizeof(ContributionGpu));
   m_children.reserve(m_context, 2 * kSliceRays * sizeof(RayGpu));
+  m_child_tags.reserve(m_context, 2 * kSliceRays * sizeof(std::int32_t));
   // Shaded points are kept only for area lights' feelers (a buffer cannot be empty).
   m_surfaces.reserve(m_context, (m_shadow_slots > 0 ? kSliceRays : 1) * sizeof(SurfaceGpu));
   if (m_shadow_slots > 0) {
     const size_t slots = std::min(kShadowSlots, kSliceRays * m_shadow_slots);
     m_shadows.reserve(m_context, slots * sizeof(RayGpu));
+    m_shadow_tags.reserve(m_context, slots * sizeof(std::int32_t));
     m_shadow_queue.reserve(m_context, slots * sizeof(RayGpu));
     m_shadow_light.reserve(m_context, slots * sizeof(ContributionGpu));
   }
@@ -390,6 +392,7 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
       .arg(static_cast<cl_int>(m_strata))
       .arg(m_emit)
       .arg(m_children)
+      .arg(m_child_tags)
       .arg(m_surfaces)
       .arg(m_aov_depth)
       .arg(m_aov_normal)
@@ -403,10 +406,10 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
   // At the last depth the children's slots are all empty, but they still hold
   // the count of point-light feelers.
   if (depth >= opt.max_depth) {
-    countRays(m_children, 2 * n, m_stats->rays_by_kind);
+    countRays(m_child_tags, 2 * n, m_stats->rays_by_kind);
     return;
   }
-  size_t child_count = compact(m_children, 2 * n, m_levels[depth + 1], m_stats->rays_by_kind);
+  size_t child_count = compact(m_children, m_child_tags, 2 * n, m_levels[depth + 1], m_stats->rays_by_kind);
   if (child_count > 0) traceLevel(depth + 1, child_count);
 }
 
@@ -427,8 +430,9 @@ void Renderer::traceShadows(size_t surfaces) {
         .arg(static_cast<cl_uint>(m_scene->camera.seed))
         .arg(static_cast<cl_int>(m_strata))
         .arg(m_shadows)
+        .arg(m_shadow_tags)
         .run(slots);
-    const size_t live = compact(m_shadows, slots, m_shadow_queue, m_stats->rays_by_kind);
+    const size_t live = compact(m_shadows, m_shadow_tags, slots, m_shadow_queue, m_stats->rays_by_kind);
     if (live == 0) continue;
     KernelLaunch occlude = m_context.launch(m_occlude);
     occlude.arg(m_shadow_queue).arg(static_cast<int>(live));
@@ -437,9 +441,9 @@ void Renderer::traceShadows(size_t surfaces) {
   }
 }
 
-size_t Renderer::countRays(const Buffer& in, size_t count, std::array<std::uint64_t, 4>& kinds) {
+size_t Renderer::countRays(const Buffer& tags, size_t count, std::array<std::uint64_t, 4>& kinds) {
   const int blocks = static_cast<int>((count + kCompactBlock - 1) / kCompactBlock);
-  m_context.launch(m_count).arg(in).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_counts).run(blocks);
+  m_context.launch(m_count).arg(tags).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_counts).run(blocks);
   m_context.launch(m_scan).arg(m_counts).arg(blocks).arg(m_offsets).arg(m_totals).run(1);
   std::int32_t totals[kTotals];
   m_totals.read(totals, sizeof totals);
@@ -448,11 +452,12 @@ size_t Renderer::countRays(const Buffer& in, size_t count, std::array<std::uint6
   return static_cast<size_t>(totals[RAY_KIND_COUNT]);
 }
 
-size_t Renderer::compact(const Buffer& in, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds) {
-  const size_t total = countRays(in, count, kinds);
+size_t Renderer::compact(const Buffer& in, const Buffer& tags, size_t count, Buffer& out,
+                         std::array<std::uint64_t, 4>& kinds) {
+  const size_t total = countRays(tags, count, kinds);
   if (total == 0) return 0;
   const int blocks = static_cast<int>((count + kCompactBlock - 1) / kCompactBlock);
-  m_context.launch(m_scatter).arg(in).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_offsets).arg(out).run(blocks);
+  m_context.launch(m_scatter).arg(in).arg(tags).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_offsets).arg(out).run(blocks);
   return static_cast<size_t>(total);
 }
 
@@ -476,8 +481,9 @@ void Renderer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
   // Everything else this render keeps on the device: queues, scene, structure, AOVs.
   std::uint64_t other = pixels * kBytesPerPixel + m_scene->objects.size() * sizeof(ObjectGpu) +
                         m_stats->accel_stats.bytes + m_tile.bytes();
-  for (const Buffer* b : {&m_work, &m_hits, &m_emit, &m_children, &m_surfaces, &m_shadows, &m_shadow_queue,
-                          &m_shadow_light, &m_counts, &m_offsets, &m_chunk_xy, &m_chunk_aov})
+  for (const Buffer* b : {&m_work, &m_hits, &m_emit, &m_children, &m_child_tags, &m_surfaces, &m_shadows,
+                          &m_shadow_tags, &m_shadow_queue, &m_shadow_light, &m_counts, &m_offsets, &m_chunk_xy,
+                          &m_chunk_aov})
     other += b->bytes();
   for (const Buffer& b : m_levels) other += b.bytes();
   if (m_firsthit && m_zbuffer)  // its per-sample buffers at their largest; its pairs are not known yet

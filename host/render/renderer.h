@@ -30,7 +30,7 @@ struct RenderStats {
   std::array<std::uint64_t, 4> rays_by_kind{};  // indexed by RAY_KIND_*; primary = primary samples
   std::array<std::uint64_t, 32> rays_per_depth{};
   int waves = 0;
-  AccelKind accel = AccelKind::Bvh;  // the structure used; accelName() names it
+  AccelKind accel = AccelKind::Bvh;  // the structure used (never Auto: what it chose); accelName() names it
   AccelStats accel_stats;            // its build (host) statistics
   AaMode aa = AaMode::None;          // the anti-aliasing mode used (the default resolved)
   FilterKind filter = FilterKind::Box;  // the filter applied (tent for quincunx; unused by adaptive)
@@ -118,12 +118,12 @@ class Renderer {
   void traceLevel(int depth, size_t count);
   // One slice of m_work; `have_hits`: m_hits already holds its closest hits.
   void traceSlice(int depth, size_t count, bool have_hits = false);
-  // Stable compaction of `in` (count slots) into `out`; returns the live count
-  // and adds the live rays of each kind to `kinds`.
-  size_t compact(const Buffer& in, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds);
+  // Stable compaction of `in` (count slots, their tags in `tags`) into `out`;
+  // returns the live count and adds the live rays of each kind to `kinds`.
+  size_t compact(const Buffer& in, const Buffer& tags, size_t count, Buffer& out, std::array<std::uint64_t, 4>& kinds);
   // The first half of compact: adds the live rays of each kind (and the
   // point-light feelers shade traced) to `kinds`; returns the live count.
-  size_t countRays(const Buffer& in, size_t count, std::array<std::uint64_t, 4>& kinds);
+  size_t countRays(const Buffer& tags, size_t count, std::array<std::uint64_t, 4>& kinds);
   // The area lights' feelers of the slice's shaded points in m_surfaces: spawned in
   // runs, compacted, traced by occlude, their light added into m_film.
   void traceShadows(size_t surfaces);
@@ -157,8 +157,10 @@ class Renderer {
   size_t m_zbuffer_first = 0;  // the chunk's first sample within the Z-buffer's batch
   Buffer m_chunk_xy, m_chunk_aov, m_tile, m_pixels;
   std::vector<Buffer> m_levels;  // queue of each depth >= 1, up to 2 * kSliceRays rays
-  Buffer m_work, m_hits, m_emit, m_children, m_surfaces, m_shadows, m_shadow_queue, m_shadow_light, m_counts,
-      m_offsets, m_totals;
+  // m_child_tags, m_shadow_tags: the slot tags of m_children and m_shadows
+  // (kernels/shared/ray_gpu.h).
+  Buffer m_work, m_hits, m_emit, m_children, m_child_tags, m_surfaces, m_shadows, m_shadow_tags, m_shadow_queue,
+      m_shadow_light, m_counts, m_offsets, m_totals;
 };
 
 }  // namespace prism

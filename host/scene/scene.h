@@ -53,7 +53,7 @@ struct RenderSettings {
   Vec3 ambient{0.1, 0.1, 0.1};
   Vec3 background{0, 0, 0};
   unsigned long long seed = 0;
-  std::string accel = "bvh";  // spatial index: bvh, octree, bsp or none
+  std::string accel = "auto";  // spatial index: auto, bvh, octree, bsp or none
   std::string first_hit = "auto";  // primary visibility: auto, zbuffer or trace
 };
 

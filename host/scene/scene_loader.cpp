@@ -305,9 +305,10 @@ class SceneParser {
     if (const Json* p = find(v, "background")) r.background = colour(*p, member(path, "background"));
     if (const Json* p = find(v, "seed")) r.seed = seed(*p, member(path, "seed"));
     if (const Json* p = find(v, "accel")) {
-      const std::string name = string(*p, member(path, "accel"), "a string (bvh, octree, bsp, none)");
-      if (name != "bvh" && name != "octree" && name != "bsp" && name != "none")
-        fail(member(path, "accel"), "unknown acceleration structure '" + name + "' (expected bvh, octree, bsp, none)");
+      const std::string name = string(*p, member(path, "accel"), "a string (auto, bvh, octree, bsp, none)");
+      if (name != "auto" && name != "bvh" && name != "octree" && name != "bsp" && name != "none")
+        fail(member(path, "accel"),
+             "unknown acceleration structure '" + name + "' (expected auto, bvh, octree, bsp, none)");
       r.accel = name;
     }
     if (const Json* p = find(v, "first_hit")) {

@@ -30,7 +30,7 @@ inline RayGpu ray_make(float3 o, float3 d, float tmin, float tmax, float3 w, int
   r.time = 0.0f;
   r.dim = 0;
   r.strata_id = 0;
-  r.feelers = 0;
+  r.pad = 0;
   return r;
 }
 
@@ -41,11 +41,6 @@ inline RayGpu ray_child(RayGpu parent, float3 o, float3 d, float tmax, float3 w,
   r.time = parent.time;
   r.dim = dim;
   r.strata_id = parent.strata_id;
-  return r;
-}
-
-inline RayGpu ray_empty(void) {
-  RayGpu r = ray_make((float3)(0.0f), (float3)(0.0f), 0.0f, 0.0f, (float3)(0.0f), -1, 0, RAY_KIND_NONE, 0);
   return r;
 }
 

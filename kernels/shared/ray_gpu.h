@@ -10,9 +10,19 @@
 #define RAY_KIND_SHADOW 3
 #define RAY_KIND_COUNT 4
 /* What count_rays records per block of a queue: the live rays of each kind,
- * then the point-light feelers traced by shade (RayGpu.feelers). */
+ * then the point-light feelers traced by shade. */
 #define RAY_COUNT_FEELERS RAY_KIND_COUNT
 #define RAY_COUNT_COLUMNS (RAY_KIND_COUNT + 1)
+
+/* A queue's slots have tags beside them, one int each, so that compaction
+ * reads four bytes per slot rather than a ray, and a producer writes a ray only
+ * into a slot it fills: the kind of the slot's ray (RAY_KIND_NONE: empty, its
+ * ray never read) and, above it, the point-light feelers that shade traced at
+ * the hit which wrote the slot (counted as shadow rays; 0 elsewhere). */
+#define SLOT_KIND_BITS 4
+#define SLOT_TAG(kind, feelers) (((kind) + 1) | ((feelers) << SLOT_KIND_BITS))
+#define SLOT_KIND(tag) (((tag) & ((1 << SLOT_KIND_BITS) - 1)) - 1)
+#define SLOT_FEELERS(tag) ((tag) >> SLOT_KIND_BITS)
 
 typedef struct RayGpu {
   float ox, oy, oz, tmin;
@@ -37,11 +47,7 @@ typedef struct RayGpu {
   float time;
   int dim;
   int strata_id;
-  /* In the reflected-ray slot shade writes for each ray it shades: the point
-   * lights' shadow feelers it traced at the hit (kernels/shade.cl), which
-   * count_rays counts as shadow rays whether or not the slot holds a ray;
-   * 0 everywhere else. */
-  int feelers;
+  int pad;
 } RayGpu;
 
 #endif

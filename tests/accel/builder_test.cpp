@@ -136,14 +136,16 @@ void checkComplete(const std::vector<ObjectGpu>& objects, const Cells& cells) {
 
 TEST_CASE("structure names parse, print and reject unknown names with the valid list", "[accel][builder]") {
   for (AccelKind kind : allAccelKinds()) CHECK(parseAccelKind(accelName(kind)) == kind);
-  CHECK(allAccelKinds().size() == 4);
+  CHECK(allAccelKinds().size() == 4);  // the structures; auto is none of them
+  CHECK(parseAccelKind("auto") == AccelKind::Auto);
+  CHECK(std::string(accelName(AccelKind::Auto)) == "auto");
   CHECK_THROWS_WITH(parseAccelKind("kdtree"), Catch::Contains("'kdtree'") && Catch::Contains("bvh") &&
                                                   Catch::Contains("octree") && Catch::Contains("bsp") &&
                                                   Catch::Contains("none"));
   AccelKind k;
   CHECK_FALSE(tryParseAccelKind("BVH", &k));
   RenderOptions defaults;
-  CHECK(defaults.accel == AccelKind::Bvh);
+  CHECK(defaults.accel == AccelKind::Auto);
 }
 
 TEST_CASE("every octree and BSP leaf holds every primitive that meets its cell", "[accel][builder]") {

@@ -200,6 +200,8 @@ int main(int argc, char** argv) {
     CHECK_OK(prismParseAccel("octree", &accel));
     CHECK(accel == PRISM_ACCEL_OCTREE && strcmp(prismAccelName(accel), "octree") == 0);
     CHECK(prismParseAccel("kdtree", &accel) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK_OK(prismParseAccel("auto", &accel));
+    CHECK(accel == PRISM_ACCEL_AUTO && strcmp(prismAccelName(accel), "auto") == 0);
   }
 
   /* Area lights: the scene loader's checks and messages; a valid one renders. */

@@ -108,6 +108,7 @@ TEST_CASE("an empty scene takes every documented default", "[scene]") {
   CHECK(s.render.ambient == Vec3::splat(0.1));
   CHECK(s.render.background == Vec3());
   CHECK(s.render.seed == 0);
+  CHECK(s.render.accel == "auto");
   REQUIRE(s.materials.size() == 1);
   CHECK(s.lights.empty());
   CHECK(s.objects.empty());
@@ -198,6 +199,7 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
       {R"({"render": {"max_depth": -1}})", {"render.max_depth", "got -1"}},
       {R"({"render": {"min_weight": 2}})", {"render.min_weight", "a number in [0, 1]", "got 2"}},
       {R"({"render": {"seed": -1}})", {"render.seed", "a non-negative integer", "got -1"}},
+      {R"({"render": {"accel": "kdtree"}})", {"render.accel", "'kdtree'", "auto, bvh, octree, bsp, none"}},
       {R"({"render": {"seed": 2.5}})", {"render.seed", "got 2.5"}},
       {R"({"render": {"ambient": [1, 2]}})", {"render.ambient", "expected a colour", "got [1, 2]"}},
       {R"({"render": {"background": [0, -1, 0]}})",

@@ -204,6 +204,34 @@ TEST_CASE("every hit sends one feeler per light in front of it, counted at every
   }
 }
 
+TEST_CASE("auto traces a handful of primitives by brute force, more through the BVH, to the same image",
+          "[render][accel]") {
+  auto scene_with = [](int spheres) {
+    std::string objects = R"({"type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "material": "m"})";
+    for (int i = 0; i < spheres; ++i)
+      objects += R"(, {"type": "sphere", "center": [)" + std::to_string(i - 1.5) + R"(, 0, 0], "radius": 0.4,
+                     "material": "m"})";
+    return parseScene(R"({"camera": {"position": [0, 1, 6], "look_at": [0, 0, 0], "fov": 40},
+                          "film": {"width": 32, "height": 24}, "render": {"max_depth": 3},
+                          "materials": {"m": {"diffuse": [0.5, 0.6, 0.7], "reflect": 0.3}},
+                          "lights": [{"position": [3, 5, 4]}], "objects": [)" + objects + "]}",
+                      "auto.json");
+  };
+  for (int spheres : {3, 4}) {
+    Scene scene = scene_with(spheres);
+    RenderOptions opt = RenderOptions::fromScene(scene);
+    CHECK(opt.accel == AccelKind::Auto);  // the scene format's default
+    RenderResult chosen = renderScene(scene, opt);
+    const std::size_t primitives = static_cast<std::size_t>(spheres) + 1;
+    const AccelKind expected = primitives <= kAutoBruteForcePrimitives ? AccelKind::None : AccelKind::Bvh;
+    CHECK(chosen.stats.accel == expected);
+    opt.accel = expected == AccelKind::None ? AccelKind::Bvh : AccelKind::None;
+    RenderResult other = renderScene(scene, opt);
+    CHECK(other.stats.accel == opt.accel);
+    CHECK(std::memcmp(chosen.rgba.data(), other.rgba.data(), chosen.rgba.size() * sizeof(float)) == 0);
+  }
+}
+
 TEST_CASE("the wavefront image matches the recursive double-precision tracer", "[render][reference]") {
   // Mirror and glass spheres in a box: reflection, refraction with total internal
   // reflection, shadows through glass, several bounces.
