@@ -1,8 +1,11 @@
-/* The interface every acceleration structure implements for the extend and
- * occlude kernels. Each structure's header provides
+/* The interface every acceleration structure implements for the extend,
+ * shade and occlude kernels:
  *   bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit);
  *   float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials,
  *                             float3 o, float3 d, float time, float tmin, float tmax);
+ * Each structure's header provides them as structure_closest and
+ * structure_transmittance; the two above turn away, as misses, rays no
+ * structure can walk (accel_ray_walkable), then call those.
  * (time: the ray's instant, at which moving objects are tested; their boxes in
  * every structure cover their whole motion)
  * (transmittance multiplies k_trans once per primitive the segment meets; an
@@ -44,5 +47,29 @@
 #else
 #include "accel/none.h"
 #endif
+
+/* A ray with a NaN or infinite origin or direction component, a zero
+ * direction, or a NaN bound meets nothing. Turned away here, before any
+ * structure: NaN slab distances vanish in fmin/fmax, so a tree walk would take
+ * every child of every node and overrun its stack. */
+PRISM_HOT bool accel_ray_walkable(float3 o, float3 d, float tmin, float tmax) {
+  float3 sum = fabs(o) + fabs(d); /* inf or NaN when any component is */
+  return isfinite(sum.x) && isfinite(sum.y) && isfinite(sum.z) && (d.x != 0.0f || d.y != 0.0f || d.z != 0.0f) &&
+         isfinite(tmin) && !isnan(tmax);
+}
+
+PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
+  if (!accel_ray_walkable(o, d, tmin, tmax)) {
+    accel_miss(hit);
+    return false;
+  }
+  return structure_closest(ACCEL_ARGS, o, d, time, tmin, tmax, hit);
+}
+
+PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d,
+                                    float time, float tmin, float tmax) {
+  if (!accel_ray_walkable(o, d, tmin, tmax)) return 1.0f; /* nothing in the way of a ray that goes nowhere */
+  return structure_transmittance(ACCEL_ARGS, materials, o, d, time, tmin, tmax);
+}
 
 #endif

@@ -5,7 +5,7 @@
 
 #include "accel/leaf_packets.h"
 
-PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
+PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
   for (int i = 0; i < object_count; ++i) {
@@ -23,7 +23,7 @@ PRISM_HOT bool accel_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float
 
 /* Fraction of light a shadow feeler carries from tmin to tmax: an opaque object
  * blocks it, each semitransparent object it meets multiplies it by k_trans once. */
-PRISM_HOT float accel_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
+PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
                                     float tmin, float tmax) {
   float carried = 1.0f;
   for (int i = 0; i < object_count && carried > 0.0f; ++i) {

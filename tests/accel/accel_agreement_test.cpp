@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -412,5 +413,56 @@ TEST_CASE("traceRays answers closest hits and occlusion with the tracing timed a
     TraceResult occluded = traceRays(sharedContext(), scene.objects, kind, rays, true);
     CHECK(occluded.hits.empty());
     CHECK(occluded.occluded == std::vector<std::uint8_t>{1, 0, 0, 0});
+  }
+}
+
+TEST_CASE("rays with NaN or infinite parts, or no direction, are misses in every structure", "[accel]") {
+  // Before the guard in kernels/accel/accel.h a NaN direction sent the BVH walk
+  // into every child of every node until its stack overran (SIGSEGV).
+  AccelScene scene = mixedScene();
+  const Aabb box = boundsOf(scene.objects);
+  std::vector<QueryRay> good = cameraRays(box, 16, 16);
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  std::vector<QueryRay> rays;
+  std::vector<bool> walkable;
+  std::size_t k = 0;
+  for (const QueryRay& g : good) {
+    rays.push_back(g);
+    walkable.push_back(true);
+    QueryRay bad = g;
+    float* field[] = {&bad.ox, &bad.oy, &bad.oz, &bad.tmin, &bad.dx, &bad.dy, &bad.dz, &bad.tmax};
+    switch (k++ % 6) {
+      case 0: *field[(k / 6) % 8] = nan; break;                    // any field NaN
+      case 1: *field[(k / 6) % 3] = (k % 2 ? inf : -inf); break;   // an infinite origin
+      case 2: *field[4 + (k / 6) % 3] = (k % 2 ? inf : -inf); break;  // an infinite direction
+      case 3: bad.dx = bad.dy = bad.dz = 0; break;                 // no direction
+      case 4: bad.dx = bad.dy = bad.dz = nan; break;
+      default: bad.tmin = inf; break;
+    }
+    rays.push_back(bad);
+    walkable.push_back(false);
+  }
+  std::size_t hits_before = 0;
+  for (AccelKind kind : allAccelKinds()) {
+    RayQueryEngine engine(sharedContext(), scene.objects, kind, scene.materials);
+    INFO(accelName(kind));
+    const std::vector<HitGpu> hits = engine.intersect(rays);
+    const std::vector<std::uint8_t> occluded = engine.occluded(rays);
+    const std::vector<float> carried = engine.transmittance(toRayGpu(rays));
+    std::size_t good_hits = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      if (walkable[i]) {
+        good_hits += hits[i].prim >= 0;
+        continue;
+      }
+      INFO("ray " << i);
+      CHECK(hits[i].prim == -1);
+      CHECK(std::isinf(hits[i].t));
+      CHECK(occluded[i] == 0);
+      CHECK(carried[i] == 1.0f);
+    }
+    CHECK(good_hits > 0);  // the well-formed rays beside them still hit
+    if (hits_before) CHECK(good_hits == hits_before);
+    hits_before = good_hits;
   }
 }
