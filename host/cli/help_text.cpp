@@ -232,7 +232,11 @@ prismIntersect and prismOccluded).
                  the primid AOV does: objects in scene order, a mesh counting its
                  triangles in file order (polygons fanned as (v0, vk, vk+1);
                  zero-area triangles keep their numbers). u, v: barycentrics of
-                 vertices 1 and 2 (0 for analytic objects).
+                 vertices 1 and 2 (0 for analytic objects). A file is written
+                 whole or not at all (a temporary beside it, then renamed; through
+                 a symbolic link, beside the file it names); a pipe or device such
+                 as /dev/stdout is written in place. A short write is an error.
+                 Rays with a NaN or infinite component or no direction are misses.
   --occluded     answer any-hit instead: t = 0 where something lies in
                  (tmin, tmax), +inf where nothing does; prim = -1, u = v = 0
   --accel A      bvh (default), octree, bsp, none, or auto (none for at most 4

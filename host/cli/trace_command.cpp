@@ -1,7 +1,10 @@
 // `prism trace SCENE_OR_MESH --rays IN --hits OUT`: prism as a ray-query engine
 // for other programs, through prismIntersect / prismOccluded.
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <memory>
@@ -51,24 +54,45 @@ bool readRays(const std::string& path, std::vector<PrismRay>& rays) {
   return true;
 }
 
-// Written under a temporary name and renamed, so a failure leaves no half file.
+// Every byte written and the file closed, or false with errno's reason.
+bool writeAll(std::FILE* f, const std::vector<PrismHit>& hits, std::string* reason) {
+  const std::size_t n = hits.size();
+  bool ok = std::fwrite(hits.data(), sizeof(PrismHit), n, f) == n;
+  ok = std::fflush(f) == 0 && ok;
+  const int err = errno;
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok) *reason = std::strerror(errno ? errno : err);
+  return ok;
+}
+
+// A regular file (or a new one) is written under a temporary name beside it and
+// renamed, so a failure leaves no half file; through a symbolic link, beside
+// the file it names. A pipe or a device (/dev/stdout) is written in place: a
+// rename would replace the device node with a file. Any short write (a full
+// disk: /dev/full) is an error.
 bool writeHits(const std::string& path, const std::vector<PrismHit>& hits) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(hits.data()), static_cast<std::streamsize>(hits.size() * sizeof(PrismHit)));
-    if (!out) {
-      std::remove(tmp.c_str());
-      printError("cannot write hits to '" + path + "'");
-      return false;
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    printError("cannot write hits to '" + path + "'");
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::string reason;
+  const fs::file_status st = fs::status(path, ec);  // through symbolic links
+  if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st)) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (f && writeAll(f, hits, &reason)) return true;
+    printError("cannot write hits to '" + path + "': " + (f ? reason : std::string(std::strerror(errno))));
     return false;
   }
-  return true;
+  fs::path target(path);
+  for (int links = 0; links < 40 && fs::is_symlink(target, ec); ++links) {
+    const fs::path next = fs::read_symlink(target, ec);
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+  const std::string tmp = target.string() + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (f && writeAll(f, hits, &reason) && std::rename(tmp.c_str(), target.c_str()) == 0) return true;
+  if (reason.empty()) reason = std::strerror(errno);
+  std::remove(tmp.c_str());
+  printError("cannot write hits to '" + path + "': " + reason);
+  return false;
 }
 
 }  // namespace

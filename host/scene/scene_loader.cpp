@@ -692,6 +692,12 @@ Scene parseScene(const std::string& json_text, const std::string& name) {
 }
 
 Scene loadSceneFile(const std::string& path) {
+  // Only a regular file: opening a FIFO blocks until a writer comes, and a
+  // device such as /dev/zero never ends.
+  std::error_code ec;
+  const std::filesystem::file_status st = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) && !std::filesystem::is_directory(st))
+    throw SceneIoError(path + ": cannot read scene file: not a regular file");
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw SceneIoError(path + ": cannot open scene file: " + std::strerror(errno));
   std::string text;
