@@ -83,7 +83,6 @@ void appendMesh(const Object& ob, std::vector<ObjectGpu>& out, bool moving) {
       world_normals[v] = len > 0 ? w / len : w;
     }
   }
-  out.reserve(out.size() + mesh.triangleCount());
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     ObjectGpu g{};
     g.type = OBJECT_TRIANGLE;
@@ -217,6 +216,11 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   const bool shutter = scene.camera.hasShutterInterval();
   std::vector<MotionGpu> motions;
   std::vector<std::pair<std::size_t, std::size_t>> moving;  // (primitive, motion record)
+  // Reserved once: a reservation per mesh, of exactly what it adds, would defeat
+  // the vector's doubling and copy everything again for every mesh.
+  std::size_t total = 0;
+  for (const Object& ob : scene.objects) total += ob.type == ObjectType::Mesh ? ob.mesh->triangleCount() : 1;
+  g.objects.reserve(total);
   for (const Object& ob : scene.objects) {
     const bool moves = shutter && ob.moving;
     const std::size_t first = g.objects.size();

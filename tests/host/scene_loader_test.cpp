@@ -125,6 +125,38 @@ TEST_CASE("an empty scene takes every documented default", "[scene]") {
   CHECK(d.texture.kind == Texture::Kind::None);
 }
 
+TEST_CASE("many materials keep their file order, a repeated name its first place and last value", "[scene]") {
+  // 3000 materials named so that sorted order differs from file order, one
+  // repeated, a key named like a material inside another object, and objects
+  // naming materials from both ends.
+  std::string materials, objects;
+  const int n = 3000;
+  for (int i = 0; i < n; ++i) {
+    const std::string name = "m" + std::to_string((i * 7919) % n);
+    materials += (i ? ", \"" : "\"") + name + "\": {\"diffuse\": " + std::to_string(i % 10 / 10.0) + "}";
+  }
+  materials += ", \"m0\": {\"diffuse\": 0.25}";  // "m0" came first in the file; this value wins
+  for (int i : {0, 1, n - 1})
+    objects += std::string(objects.empty() ? "" : ", ") + R"({"type": "sphere", "center": [0, 0, 0], "radius": 1,
+        "material": "m)" + std::to_string((i * 7919) % n) + "\"}";
+  const Scene s = parseScene("{\"camera\": {\"m5\": 1}, \"materials\": {" + materials + "}, \"objects\": [" +
+                                 objects + "]}",
+                             "many.json");
+  REQUIRE(s.materials.size() == static_cast<std::size_t>(n) + 1);
+  for (int i = 0; i < n; ++i) CHECK(s.materials[i + 1].name == "m" + std::to_string((i * 7919) % n));
+  CHECK(s.materials[1].diffuse == Vec3::splat(0.25));
+  CHECK(s.materials[2].diffuse == Vec3::splat(0.1));
+  REQUIRE(s.objects.size() == 3);
+  CHECK(s.objects[0].material == 1);
+  CHECK(s.objects[1].material == 2);
+  CHECK(s.objects[2].material == n);
+  // An unknown name lists the first 20 and counts the rest.
+  CHECK_THROWS_WITH(parseScene("{\"materials\": {" + materials + R"(}, "objects": [{"type": "sphere",
+                        "center": [0, 0, 0], "radius": 1, "material": "nope"}]})",
+                               "many.json"),
+                    Catch::Contains("unknown material 'nope'") && Catch::Contains("and 2981 more"));
+}
+
 TEST_CASE("materials, lights and objects fill in their defaults", "[scene]") {
   const Scene s = parseScene(R"({
     "materials": {"zeta": {}, "alpha": {"diffuse": 0.5, "texture": {"type": "checker"}}},
