@@ -42,6 +42,8 @@ struct ParsedJson {
 constexpr int kMaxFilmSize = 32768;
 constexpr int kMaxSpp = 65536;  // the renderer keeps all samples of a pixel in one 65536-ray slice
 constexpr int kMaxDepth = 31;
+constexpr double kMaxColour = 1e6;     // see colour()
+constexpr double kMaxExponent = 1e6;   // shininess: pow_positive is checked up to it (tests/kernels/math_test.cpp)
 
 std::string join(const std::vector<std::string>& names) {
   std::string out;
@@ -201,12 +203,14 @@ class SceneParser {
   }
 
   // A colour is 3 non-negative numbers; one number stands for a grey.
+  // Components in [0, kMaxColour]: the kernels multiply a colour by others and
+  // by a light (color x intensity <= 1e30), and each product must stay a float.
   Vec3 colour(const Json& v, const std::string& path) const {
-    static const Check nonNegative = [](double x) { return x >= 0; };
-    if (v.is_number()) return Vec3::splat(number(v, path, "a non-negative number", nonNegative));
+    static const Check inRange = [](double x) { return x >= 0 && x <= kMaxColour; };
+    if (v.is_number()) return Vec3::splat(number(v, path, "a number in [0, 1e6]", inRange));
     if (!v.is_array() || v.size() != 3)
-      expected(path, "a colour (an array of 3 non-negative numbers, or one number for grey)", v);
-    return vec3(v, path, "a non-negative number", nonNegative);
+      expected(path, "a colour (an array of 3 numbers in [0, 1e6], or one number for grey)", v);
+    return vec3(v, path, "a number in [0, 1e6]", inRange);
   }
 
   void parseCamera(const Json& v, const std::string& path) {
@@ -367,8 +371,8 @@ class SceneParser {
     if (const Json* p = find(v, "diffuse")) m.diffuse = colour(*p, member(path, "diffuse"));
     if (const Json* p = find(v, "specular")) m.specular = colour(*p, member(path, "specular"));
     if (const Json* p = find(v, "shininess"))
-      m.shininess =
-          number(*p, member(path, "shininess"), "a non-negative number", [](double x) { return x >= 0; });
+      m.shininess = number(*p, member(path, "shininess"), "a number in [0, 1e6]",
+                           [](double x) { return x >= 0 && x <= kMaxExponent; });
     if (const Json* p = find(v, "reflect"))
       m.reflect = number(*p, member(path, "reflect"), "a number in [0, 1]", unit);
     if (const Json* p = find(v, "transmit"))
