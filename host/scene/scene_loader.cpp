@@ -14,7 +14,7 @@
 
 #include "mesh/mesh_cache.h"
 #include "mesh/mesh_error.h"
-#include "render/sampler.h"
+#include "scene/sampling_options.h"
 #include "scene/camera_check.h"
 #include "scene/light_check.h"
 #include "scene/mesh_objects.h"
