@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/, clang with ASan + UBSan) into
 # build-fuzz/ and runs each for $PRISM_FUZZ_SECONDS seconds (default 60),
-# seeded with the shared mesh corpus. Fails if any target finds a crash, a
-# sanitizer error, a leak, a timeout (a hang) or an out-of-memory.
-# Usage: scripts/run-fuzzers.sh [obj|ply|off ...]   (default: all three)
+# seeded with the shared mesh corpus (the scene loader: with scenes/). Fails if
+# any target finds a crash, a sanitizer error, a leak, a timeout (a hang) or an
+# out-of-memory.
+# Usage: scripts/run-fuzzers.sh [obj|ply|off|scene ...]   (default: all four)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PRISM_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${PRISM_FUZZ_SECONDS:-60}"
 data="$root/../shared/data"
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(obj ply off)
+[ ${#targets[@]} -gt 0 ] || targets=(obj ply off scene)
 
 if ! command -v clang++ >/dev/null; then
   echo "run-fuzzers: clang++ not found (Debian: clang libclang-rt-14-dev)" >&2
@@ -26,12 +27,16 @@ for t in "${targets[@]}"; do
   mkdir -p "$corpus" "$artifacts"
   # Seeds: every file of the format from the shared corpus, good and bad,
   # plus the smaller benchmark meshes (inputs over -max_len are cut).
-  seeds=()
-  for d in "$data/formats/$t" "$data/formats/bad/$t"; do [ -d "$d" ] && seeds+=("$d"); done
   seed_dir="$build/seeds/$t"
   rm -rf "$seed_dir" && mkdir -p "$seed_dir"
-  find "${seeds[@]}" "$data/meshes" -type f -iname "*.$t" -size -2M -exec cp -t "$seed_dir" {} + 2>/dev/null || true
-  [ "$t" = off ] && cp "$data/formats/off/assimp/formatDetection" "$seed_dir/" 2>/dev/null || true
+  if [ "$t" = scene ]; then
+    cp "$root"/scenes/*.json "$seed_dir/"
+  else
+    seeds=()
+    for d in "$data/formats/$t" "$data/formats/bad/$t"; do [ -d "$d" ] && seeds+=("$d"); done
+    find "${seeds[@]}" "$data/meshes" -type f -iname "*.$t" -size -2M -exec cp -t "$seed_dir" {} + 2>/dev/null || true
+    [ "$t" = off ] && cp "$data/formats/off/assimp/formatDetection" "$seed_dir/" 2>/dev/null || true
+  fi
   echo "fuzzing $t for ${seconds}s (seeds: $(ls "$seed_dir" | wc -l) files)"
   if ! "$build/${t}_fuzzer" "$corpus" "$seed_dir" \
       -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
