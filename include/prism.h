@@ -174,7 +174,8 @@ typedef struct PrismAreaLight {
 PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* light);
 /* Adds a mesh object from a file. `material` names a material of the scene (NULL:
  * the file's own materials); `object_to_world` is a 4x4 row-major affine matrix
- * (NULL: identity); `smooth` nonzero interpolates the file's vertex normals.
+ * (NULL: identity; the scene format's rule: invertible, its entries and its
+ * inverse's at most 1e15 in magnitude); `smooth` nonzero interpolates the file's vertex normals.
  * Several objects naming one file share its data. `out_object` (may be NULL)
  * receives the object's index. */
 PRISM_API PrismStatus prismAddMeshFile(PrismScene scene, const char* path, const char* material,

@@ -31,7 +31,8 @@ Transform transformFrom(const float* m) {
   Transform t;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c) t.m[r][c] = m[4 * r + c];
-  if (t.determinant() == 0) throw std::invalid_argument("object_to_world: the matrix is singular");
+  const std::string problem = transformProblem(t);
+  if (!problem.empty()) throw std::invalid_argument("object_to_world: " + problem);
   return t;
 }
 

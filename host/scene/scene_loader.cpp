@@ -588,19 +588,8 @@ class SceneParser {
     } else {
       expected(path, "a transform (an object, or an array of objects)", v);
     }
-    double rowNorms = 1;
-    bool finite = true;
-    for (const auto& row : t.m) {
-      rowNorms *= std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
-      for (double x : row) finite = finite && std::isfinite(x);
-    }
-    const double det = t.determinant();
-    if (!finite || !std::isfinite(det))
-      fail(path, "expected a transform with finite entries, got one that overflows");
-    // |det| <= product of row norms (Hadamard), so this ratio is scale-free.
-    if (!(std::fabs(det) > 1e-12 * rowNorms))
-      fail(path,
-           "expected an invertible transform, got a singular one (determinant " + formatNumber(det) + ")");
+    const std::string problem = transformProblem(t);
+    if (!problem.empty()) fail(path, problem);
     return t;
   }
 

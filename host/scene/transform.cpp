@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace prism {
 
@@ -120,6 +121,35 @@ Transform Transform::inverse() const {
   // Translation: -R^-1 t.
   for (int i = 0; i < 3; ++i) r.m[i][3] = -(r.m[i][0] * m[0][3] + r.m[i][1] * m[1][3] + r.m[i][2] * m[2][3]);
   return r;
+}
+
+namespace {
+
+bool entriesFit(const Transform& t) {
+  for (const auto& row : t.m)
+    for (double x : row)
+      if (!(std::fabs(x) <= kMaxTransformEntry)) return false;  // NaN fails too
+  return true;
+}
+
+}  // namespace
+
+std::string transformProblem(const Transform& t) {
+  if (!entriesFit(t))
+    return "expected a transform with finite entries of at most 1e15 in magnitude, got one that overflows";
+  double row_norms = 1;
+  for (const auto& row : t.m) row_norms *= std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
+  const double det = t.determinant();
+  // |det| <= product of row norms (Hadamard), so this ratio is scale-free.
+  if (!(std::fabs(det) > 1e-12 * row_norms)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", det);
+    return std::string("expected an invertible transform, got a singular one (determinant ") + text + ")";
+  }
+  if (!entriesFit(t.inverse()))
+    return "expected a transform whose inverse has entries of at most 1e15 in magnitude, got one too close to "
+           "singular";
+  return "";
 }
 
 }  // namespace prism

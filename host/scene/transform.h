@@ -2,6 +2,8 @@
 // row (0 0 0 1) is implicit.
 #pragma once
 
+#include <string>
+
 #include "scene/vec3.h"
 
 namespace prism {
@@ -24,5 +26,15 @@ struct Transform {
   double determinant() const;
   Transform inverse() const;  // requires determinant() != 0
 };
+
+// Entries of an object's transform and of its inverse (which the kernels use)
+// are at most this in magnitude, so both fit in single-precision floats.
+constexpr double kMaxTransformEntry = 1e15;
+
+// "" when `t` can place an object, else what is wrong with it, as the end of
+// a sentence ("expected ..., got ..."). Shared by the scene loader (which adds
+// the JSON path) and the C API (which adds the function and argument), so both
+// give the same rule and the same message.
+std::string transformProblem(const Transform& t);
 
 }  // namespace prism

@@ -204,6 +204,33 @@ int main(int argc, char** argv) {
     CHECK(accel == PRISM_ACCEL_AUTO && strcmp(prismAccelName(accel), "auto") == 0);
   }
 
+  /* The scene format's rules hold for values the C API is given: no NaN or
+   * infinite light, no transform with entries or an inverse beyond floats. */
+  {
+    const float pos[3] = {0.0f, 5.0f, 5.0f}, white[3] = {1.0f, 1.0f, 1.0f};
+    float bad_pos[3] = {0.0f, 5.0f, 5.0f};
+    const float tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const uint32_t idx[3] = {0, 1, 2};
+    float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    bad_pos[1] = NAN;
+    CHECK(prismAddPointLight(scene, bad_pos, white, 1.0f) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "prismAddPointLight") != NULL && strstr(prismGetLastError(), "position") != NULL);
+    bad_pos[1] = INFINITY;
+    CHECK(prismAddPointLight(scene, bad_pos, white, 1.0f) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(prismAddPointLight(scene, pos, white, NAN) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(prismAddPointLight(scene, pos, white, INFINITY) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "intensity") != NULL);
+    m[3] = NAN;
+    CHECK(prismAddMeshArrays(scene, tri, 3, idx, 1, NULL, m, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "object_to_world") != NULL && strstr(prismGetLastError(), "finite") != NULL);
+    m[3] = 0.0f;
+    m[0] = 1e30f; /* a float, but not when the kernels multiply by it */
+    CHECK(prismAddMeshArrays(scene, tri, 3, idx, 1, NULL, m, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
+    m[0] = m[5] = m[10] = 1e-20f; /* invertible, but its inverse is not a float */
+    CHECK(prismAddMeshArrays(scene, tri, 3, idx, 1, NULL, m, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "inverse") != NULL);
+  }
+
   /* Area lights: the scene loader's checks and messages; a valid one renders. */
   {
     PrismAreaLight light;

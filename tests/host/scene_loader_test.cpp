@@ -306,6 +306,8 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
       {R"("transform": {"matrix": [1, 0, 0, 0, 2, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})",
        {"objects[0].transform: expected an invertible transform", "singular"}},
       {R"("transform": [{"scale": 1e-200}, {"scale": 1e-200}])", {"objects[0].transform"}},
+      {R"("transform": {"scale": 1e20})", {"objects[0].transform", "at most 1e15", "overflows"}},
+      {R"("transform": {"scale": 1e-20})", {"objects[0].transform", "inverse", "too close to singular"}},
   };
   for (const Case& c : cases) {
     std::string json = c.json;
