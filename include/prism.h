@@ -326,6 +326,13 @@ PRISM_API PrismStatus prismGetKernelTimeCount(PrismContext context, uint32_t* co
 PRISM_API PrismStatus prismGetKernelTime(PrismContext context, uint32_t index, const char** name, double* seconds,
                                          uint64_t* launches);
 
+/* The checks prismRender makes of `options` before any work (sizes, samples,
+ * depth, weights, sampling modes), with the same status and message: call it
+ * before allocating the image, so a size over a limit is refused before a
+ * caller sets gigabytes aside for it. Whether the film fits the device is
+ * known only to prismRender (PRISM_ERROR_OUT_OF_MEMORY). */
+PRISM_API PrismStatus prismCheckRenderOptions(const PrismRenderOptions* options);
+
 /* Renders `scene` with `options` (NULL: the scene's own) into `rgba`, a caller-owned
  * buffer of width*height*4 floats, rows top to bottom, linear colour, alpha 1 on a hit
  * and 0 where the primary ray missed. `stats` may be NULL. */

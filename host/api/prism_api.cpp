@@ -228,6 +228,16 @@ PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions
   return PRISM_OK;
 }
 
+PRISM_API PrismStatus prismCheckRenderOptions(const PrismRenderOptions* options) {
+  PRISM_REQUIRE(options, "prismCheckRenderOptions: options is NULL");
+  PRISM_REQUIRE(options->struct_size >= sizeof(PrismRenderOptions),
+                "prismCheckRenderOptions: options->struct_size is too small (fill options with prismGetRenderOptions)");
+  return guarded([&] {
+    fromC(*options).validate();
+    return PRISM_OK;
+  });
+}
+
 PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const PrismRenderOptions* options,
                                   float* rgba, PrismRenderStats* stats) {
   PRISM_REQUIRE(context && scene && rgba, "prismRender: NULL context, scene or rgba buffer");

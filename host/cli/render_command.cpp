@@ -221,6 +221,8 @@ int runRender(const std::vector<std::string>& args) {
   options.struct_size = sizeof options;
   if (prismGetRenderOptions(scene.get(), &options) != PRISM_OK) return failWithLastError();
   applyOverrides(request, options);
+  // Before the image is allocated (32768 x 32768 would take 16 GiB first).
+  if (prismCheckRenderOptions(&options) != PRISM_OK) return failWithLastError();
   if (!applyCameraOverrides(request, scene.get())) return failWithLastError();
 
   PrismContextOptions context_options{};

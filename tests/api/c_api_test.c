@@ -204,6 +204,16 @@ int main(int argc, char** argv) {
     CHECK(accel == PRISM_ACCEL_AUTO && strcmp(prismAccelName(accel), "auto") == 0);
   }
 
+  /* Options are checked before anything is allocated. */
+  {
+    PrismRenderOptions huge = opts;
+    CHECK_OK(prismCheckRenderOptions(&opts));
+    huge.width = huge.height = 32768;
+    CHECK(prismCheckRenderOptions(&huge) == PRISM_ERROR_INVALID_ARGUMENT);
+    CHECK(strstr(prismGetLastError(), "2^28") != NULL);
+    CHECK(prismCheckRenderOptions(NULL) == PRISM_ERROR_INVALID_ARGUMENT);
+  }
+
   /* The scene format's rules hold for values the C API is given: no NaN or
    * infinite light, no transform with entries or an inverse beyond floats. */
   {
