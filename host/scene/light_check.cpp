@@ -3,25 +3,9 @@
 #include <cmath>
 #include <utility>
 
+#include "scene/value_check.h"
+
 namespace prism {
-namespace {
-
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-// What the kernels compute from a value must fit in float: lengths are squared
-// and multiplied by areas, so keep coordinates well inside float's range.
-constexpr double kMaxCoordinate = 1e15;
-bool fitsFloat(const Vec3& v) {
-  return std::fabs(v.x) <= kMaxCoordinate && std::fabs(v.y) <= kMaxCoordinate && std::fabs(v.z) <= kMaxCoordinate;
-}
-
-std::string vectorProblem(const Vec3& v, const char* name) {
-  if (!finite(v)) return std::string(name) + " must be finite";
-  if (!fitsFloat(v)) return std::string(name) + " must have coordinates of at most 1e15 in magnitude";
-  return "";
-}
-
-}  // namespace
 
 const char* lightTypeName(LightType type) {
   switch (type) {

@@ -17,6 +17,7 @@
 #include "scene/sampling_options.h"
 #include "scene/camera_check.h"
 #include "scene/light_check.h"
+#include "scene/object_check.h"
 #include "scene/mesh_objects.h"
 #include <string>
 #include <unordered_map>
@@ -510,6 +511,8 @@ class SceneParser {
       o.transform_end = parseTransform(*p, member(path, "transform_end"));
     }
     bakeTransform(o);
+    const std::string problem = objectProblem(o);
+    if (!problem.empty()) fail(path, problem);
     return o;
   }
 

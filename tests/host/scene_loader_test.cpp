@@ -288,6 +288,13 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
        {"objects[0].vertices", "an array of 3 points"}},
       {R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}, {"type": "sphere", "center": [0, 0, 0]}]})",
        {"objects[1]: missing required key 'radius'"}},
+      {R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1e300}]})",
+       {"objects[0]: radius must be a positive number of at most 1e15"}},
+      {R"({"objects": [{"type": "box", "min": [-1e300, 0, 0], "max": [1, 1, 1]}]})",
+       {"objects[0]: min must have coordinates of at most 1e15 in magnitude"}},
+      {R"({"objects": [{"type": "triangle", "vertices": [[1e15, 0, 0], [1e15, 1e3, 0], [1e15, 0, 1e3]],
+           "transform": {"translate": [1e15, 0, 0]}}]})",
+       {"objects[0]: vertices must have coordinates of at most 1e15 in magnitude"}},
       // transforms
       {"*", {"objects[0].transform", "expected a transform", "got \"abc\""}},
       {R"("transform": [{"scale": 2}, 5])", {"objects[0].transform[1]: expected an object, got 5"}},
