@@ -9,7 +9,7 @@
 #include <map>
 #include <memory>
 
-#include "accel/accel_workloads.h"
+#include "accel_workloads.h"
 #include "device/context.h"
 #include "device/device_list.h"
 #include "mesh/mesh_loader.h"

@@ -6,7 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "accel/accel_workloads.h"
+#include "accel_workloads.h"
 #include "device/device_list.h"
 #include "kernels/shared/ray_gpu.h"
 #include "render/renderer.h"

@@ -10,7 +10,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "accel/accel_workloads.h"
+#include "accel_workloads.h"
 #include "accel_bench.h"
 #include "device/context.h"
 #include "device/device_list.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "accel/accel_workloads.h"
+#include "accel_workloads.h"
 #include "kernels/shared/material_gpu.h"
 #include "kernels/shared/object_gpu.h"
 #include "mesh/mesh_loader.h"

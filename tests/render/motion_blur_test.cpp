@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "accel/accel_workloads.h"
+#include "accel_workloads.h"
 #include "render/gpu_scene.h"
 #include "render/renderer.h"
 #include "scene/motion.h"

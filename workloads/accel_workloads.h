@@ -1,4 +1,5 @@
-// Scenes and rays for exercising the acceleration structures, defined once
+// Scenes and rays for exercising the acceleration structures (not part of
+// libprism: workloads/CMakeLists.txt), defined once
 // and used by both the correctness tests (tests/accel) and prism-bench, so the
 // two always look at the same kind of work:
 //   - procedural meshes (a subdivided sphere, a random triangle soup) to fill

@@ -1,4 +1,4 @@
-#include "accel/accel_workloads.h"
+#include "accel_workloads.h"
 
 #include <algorithm>
 #include <array>
