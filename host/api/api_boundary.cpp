@@ -14,4 +14,9 @@ PrismStatus fail(PrismStatus status, const std::string& message) {
   return status;
 }
 
+std::string namedAfter(const char* function, const std::string& message) {
+  const std::string prefix = std::string(function) + ":";
+  return message.compare(0, prefix.size(), prefix) == 0 ? message : prefix + " " + message;
+}
+
 }  // namespace prism

@@ -13,7 +13,10 @@
 namespace prism {
 
 template <typename Body>
-PrismStatus guarded(Body&& body) {
+PrismStatus guarded(const char* function, Body&& body) {
+  auto fail = [function](PrismStatus status, const std::string& message) {
+    return prism::fail(status, namedAfter(function, message));
+  };
   try {
     return body();
   } catch (const SceneIoError& e) {

@@ -124,7 +124,7 @@ PRISM_API const char* prismStatusName(PrismStatus status) {
 
 PRISM_API PrismStatus prismGetDeviceCount(uint32_t* count) {
   PRISM_REQUIRE(count, "prismGetDeviceCount: count is NULL");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     *count = static_cast<uint32_t>(listDevices().size());
     return PRISM_OK;
   });
@@ -132,7 +132,7 @@ PRISM_API PrismStatus prismGetDeviceCount(uint32_t* count) {
 
 PRISM_API PrismStatus prismGetDeviceInfo(uint32_t index, PrismDeviceInfo* info) {
   PRISM_REQUIRE(info, "prismGetDeviceInfo: info is NULL");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     auto devices = listDevices();
     if (index >= devices.size())
       return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetDeviceInfo: no device " + std::to_string(index) + " (there are " +
@@ -154,7 +154,7 @@ PRISM_API PrismStatus prismCreateContext(const char* selector, const PrismContex
   *out_context = nullptr;
   PRISM_REQUIRE(!options || options->struct_size >= sizeof(PrismContextOptions),
                 "prismCreateContext: options->struct_size is too small (call prismDefaultContextOptions)");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     bool use_cache = options ? options->use_kernel_cache != 0 : true;
     auto impl = std::make_unique<PrismContextImpl>();
     impl->context = std::make_unique<Context>(selectDevice(selector ? selector : ""), use_cache);
@@ -182,14 +182,14 @@ PRISM_API PrismStatus prismLoadScene(const char* path, PrismScene* out_scene) {
   PRISM_REQUIRE(out_scene, "prismLoadScene: out_scene is NULL");
   *out_scene = nullptr;
   PRISM_REQUIRE(path, "prismLoadScene: path is NULL");
-  return guarded([&] { return loadInto(loadSceneFile(path), out_scene); });
+  return guarded(__func__, [&] { return loadInto(loadSceneFile(path), out_scene); });
 }
 
 PRISM_API PrismStatus prismLoadSceneFromString(const char* json, const char* name, PrismScene* out_scene) {
   PRISM_REQUIRE(out_scene, "prismLoadSceneFromString: out_scene is NULL");
   *out_scene = nullptr;
   PRISM_REQUIRE(json, "prismLoadSceneFromString: json is NULL");
-  return guarded([&] { return loadInto(parseScene(json, name ? name : "<string>"), out_scene); });
+  return guarded(__func__, [&] { return loadInto(parseScene(json, name ? name : "<string>"), out_scene); });
 }
 
 PRISM_API void prismReleaseScene(PrismScene scene) { delete scene; }
@@ -232,7 +232,7 @@ PRISM_API PrismStatus prismCheckRenderOptions(const PrismRenderOptions* options)
   PRISM_REQUIRE(options, "prismCheckRenderOptions: options is NULL");
   PRISM_REQUIRE(options->struct_size >= sizeof(PrismRenderOptions),
                 "prismCheckRenderOptions: options->struct_size is too small (fill options with prismGetRenderOptions)");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     fromC(*options).validate();
     return PRISM_OK;
   });
@@ -245,7 +245,7 @@ PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const 
                 "prismRender: options->struct_size is too small (fill options with prismGetRenderOptions)");
   PRISM_REQUIRE(!stats || stats->struct_size >= sizeof(PrismRenderStats),
                 "prismRender: stats->struct_size must be set to sizeof(PrismRenderStats)");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     RenderOptions opts = options ? fromC(*options) : RenderOptions::fromScene(scene->scene);
     opts.validate();
     if (!context->renderer) context->renderer = std::make_unique<Renderer>(*context->context);
@@ -364,7 +364,7 @@ PRISM_API PrismStatus prismWriteImage(const char* path, const float* pixels, uin
   PRISM_REQUIRE(path && pixels, "prismWriteImage: NULL path or pixels");
   PRISM_REQUIRE(width > 0 && height > 0, "prismWriteImage: empty image");
   PRISM_REQUIRE(channels == 1 || channels == 3 || channels == 4, "prismWriteImage: channels must be 1, 3 or 4");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     writeImage(path, pixels, static_cast<int>(width), static_cast<int>(height), static_cast<int>(channels));
     return PRISM_OK;
   });

@@ -78,7 +78,7 @@ extern "C" {
 
 PRISM_API PrismStatus prismNewScene(PrismScene* out_scene) {
   PRISM_REQUIRE(out_scene, "prismNewScene: out_scene is NULL");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     auto impl = new PrismSceneImpl;
     impl->scene.source = "<api>";
     impl->scene.materials.push_back(defaultMaterial());
@@ -91,7 +91,7 @@ PRISM_API PrismStatus prismLoadMeshAsScene(const char* path, PrismScene* out_sce
   PRISM_REQUIRE(out_scene, "prismLoadMeshAsScene: out_scene is NULL");
   *out_scene = nullptr;
   PRISM_REQUIRE(path, "prismLoadMeshAsScene: path is NULL");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     SharedMesh mesh = MeshCache::global().load(path);
     *out_scene = new PrismSceneImpl{sceneForMesh(mesh)};
     return PRISM_OK;
@@ -138,7 +138,7 @@ PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* 
 PRISM_API PrismStatus prismAddMeshFile(PrismScene scene, const char* path, const char* material,
                                        const float* object_to_world, int smooth, uint32_t* out_object) {
   PRISM_REQUIRE(scene && path, "prismAddMeshFile: NULL scene or path");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     return addMesh(scene, MeshCache::global().load(path), material, object_to_world, smooth, out_object);
   });
 }
@@ -147,8 +147,13 @@ PRISM_API PrismStatus prismAddMeshArrays(PrismScene scene, const float* position
                                          const uint32_t* indices, size_t triangle_count, const char* material,
                                          const float* object_to_world, uint32_t* out_object) {
   PRISM_REQUIRE(scene && positions && indices, "prismAddMeshArrays: NULL scene, positions or indices");
-  return guarded([&] {
-    SharedMesh mesh = meshFromArrays(positions, vertex_count, indices, triangle_count, "prismAddMeshArrays");
+  return guarded(__func__, [&] {
+    SharedMesh mesh;
+    try {
+      mesh = meshFromArrays(positions, vertex_count, indices, triangle_count, "prismAddMeshArrays");
+    } catch (const MeshError& e) {  // the caller's arrays, not a file: a bad argument
+      throw std::invalid_argument(e.what());
+    }
     return addMesh(scene, mesh, material, object_to_world, 0, out_object);
   });
 }
@@ -157,7 +162,7 @@ PRISM_API PrismStatus prismInspectMeshFile(const char* path, PrismMeshReport* ou
   PRISM_REQUIRE(out_report, "prismInspectMeshFile: out_report is NULL");
   *out_report = nullptr;
   PRISM_REQUIRE(path, "prismInspectMeshFile: path is NULL");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     *out_report = new PrismMeshReportImpl{loadMeshFile(path)};
     return PRISM_OK;
   });
@@ -214,7 +219,7 @@ PRISM_API void prismReleaseMeshReport(PrismMeshReport report) { delete report; }
 
 PRISM_API PrismStatus prismGetPluginCount(uint32_t* count) {
   PRISM_REQUIRE(count, "prismGetPluginCount: count is NULL");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     *count = static_cast<uint32_t>(PluginRegistry::global().candidates().size());
     return PRISM_OK;
   });
@@ -223,7 +228,7 @@ PRISM_API PrismStatus prismGetPluginCount(uint32_t* count) {
 PRISM_API PrismStatus prismGetPluginInfo(uint32_t index, PrismPluginCandidateInfo* info) {
   PRISM_REQUIRE(info && info->struct_size >= sizeof(PrismPluginCandidateInfo),
                 "prismGetPluginInfo: NULL info or struct_size too small");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     const auto& candidates = PluginRegistry::global().candidates();
     if (index >= candidates.size())
       return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetPluginInfo: no plugin " + std::to_string(index));

@@ -43,7 +43,7 @@ PRISM_API PrismStatus prismIntersect(PrismContext context, PrismScene scene, Pri
                                      PrismHit* hits, size_t count, double* trace_seconds) {
   if (!context || !scene || (count && (!rays || !hits)))
     return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismIntersect: NULL context, scene, rays or hits");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     double seconds = 0;
     if (count) {
       std::vector<HitGpu> result = engineFor(context, scene, accel).intersect(copyRays(rays, count), &seconds);
@@ -58,7 +58,7 @@ PRISM_API PrismStatus prismOccluded(PrismContext context, PrismScene scene, Pris
                                     uint8_t* occluded, size_t count, double* trace_seconds) {
   if (!context || !scene || (count && (!rays || !occluded)))
     return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismOccluded: NULL context, scene, rays or output");
-  return guarded([&] {
+  return guarded(__func__, [&] {
     double seconds = 0;
     if (count) {
       std::vector<std::uint8_t> result = engineFor(context, scene, accel).occluded(copyRays(rays, count), &seconds);

@@ -105,17 +105,17 @@ DeviceDescription selectDevice(const std::string& selector) {
   if (std::all_of(want.begin(), want.end(), [](unsigned char c) { return std::isdigit(c); })) {
     unsigned long index = std::stoul(want);
     if (index < devices.size()) return devices[index];
-    throw DeviceError("--device " + selector + ": no device with that index; devices are:" + describeAll(devices));
+    throw DeviceError("device '" + selector + "': no device with that index; devices are:" + describeAll(devices));
   }
   if (want == "cpu" || want == "gpu") {
     cl_device_type type = want == "cpu" ? CL_DEVICE_TYPE_CPU : CL_DEVICE_TYPE_GPU;
     for (const auto& d : devices)
       if (d.type & type) return d;
-    throw DeviceError("--device " + selector + ": no " + want + " device; devices are:" + describeAll(devices));
+    throw DeviceError("device '" + selector + "': no " + want + " device; devices are:" + describeAll(devices));
   }
   for (const auto& d : devices)
     if (lower(d.name).find(want) != std::string::npos) return d;
-  throw DeviceError("--device " + selector + ": no device name contains '" + selector + "'; devices are:" +
+  throw DeviceError("device '" + selector + "': no device name contains '" + selector + "'; devices are:" +
                     describeAll(devices));
 }
 

@@ -1,0 +1,244 @@
+/* The C API's promise, call by call: a NULL pointer, an index past the end, an
+ * unknown enum value, a NaN, a size of zero or a call out of order gives an
+ * error status (never a crash, never PRISM_OK) and a message that names the
+ * function at fault. argv[1] is the scenes folder. Exits non-zero on the first
+ * failed check's count. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "prism.h"
+
+static int failures = 0;
+static int calls = 0;
+
+/* `status` must be the error `want` with a message containing `name`. */
+static void expect(PrismStatus status, PrismStatus want, const char* name, const char* what, int line) {
+  const char* message = prismGetLastError();
+  ++calls;
+  if (status != want) {
+    fprintf(stderr, "line %d: %s: %s returned %s, expected %s (%s)\n", line, name, what, prismStatusName(status),
+            prismStatusName(want), message);
+    ++failures;
+  } else if (!message || !strstr(message, name)) {
+    fprintf(stderr, "line %d: %s: %s: the message does not name the function: '%s'\n", line, name, what,
+            message ? message : "(null)");
+    ++failures;
+  }
+}
+
+#define EXPECT(call, want, name) expect((call), (want), (name), #call, __LINE__)
+#define BAD(call, name) EXPECT(call, PRISM_ERROR_INVALID_ARGUMENT, name)
+
+#define REQUIRE_OK(call)                                                                                  \
+  do {                                                                                                    \
+    PrismStatus s_ = (call);                                                                              \
+    if (s_ != PRISM_OK) {                                                                                 \
+      fprintf(stderr, "line %d: %s returned %s: %s\n", __LINE__, #call, prismStatusName(s_), prismGetLastError()); \
+      return 1;                                                                                           \
+    }                                                                                                     \
+  } while (0)
+
+int main(int argc, char** argv) {
+  char path[4096];
+  uint32_t count = 0, u32 = 0;
+  PrismDeviceInfo info;
+  PrismContextOptions context_options;
+  PrismContext ctx = NULL, none_ctx = NULL;
+  PrismScene scene = NULL, none_scene = NULL;
+  PrismCamera camera;
+  PrismAreaLight area;
+  PrismMeshReport report = NULL;
+  PrismMeshCounts mesh_counts;
+  PrismPluginCandidateInfo plugin;
+  PrismRenderOptions opts, small;
+  PrismRenderStats stats;
+  PrismAccel accel;
+  PrismAa aa;
+  PrismFilter filter;
+  PrismFirstHit first_hit;
+  PrismAov aov;
+  PrismRay ray;
+  PrismHit hit;
+  uint8_t occluded = 0;
+  const char* text = NULL;
+  double seconds = 0;
+  uint64_t launches = 0;
+  float rgba[4 * 8 * 6], out[8 * 6 * 3];
+  const float pos[3] = {0, 5, 5}, white[3] = {1, 1, 1};
+  const float tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const uint32_t idx[3] = {0, 1, 2}, bad_idx[3] = {0, 1, 7};
+
+  if (argc < 2) {
+    fprintf(stderr, "usage: c_api_arguments_test SCENES_DIR\n");
+    return 2;
+  }
+  snprintf(path, sizeof path, "%s/whitted.json", argv[1]);
+
+  /* Devices and contexts. */
+  BAD(prismGetDeviceCount(NULL), "prismGetDeviceCount");
+  REQUIRE_OK(prismGetDeviceCount(&count));
+  BAD(prismGetDeviceInfo(0, NULL), "prismGetDeviceInfo");
+  EXPECT(prismGetDeviceInfo(count, &info), PRISM_ERROR_INVALID_ARGUMENT, "prismGetDeviceInfo");
+  prismDefaultContextOptions(NULL); /* a no-op, not a crash */
+  prismDefaultContextOptions(&context_options);
+  BAD(prismCreateContext(NULL, NULL, NULL), "prismCreateContext");
+  EXPECT(prismCreateContext("no-such-device", NULL, &none_ctx), PRISM_ERROR_DEVICE, "prismCreateContext");
+  if (none_ctx) {
+    fprintf(stderr, "a failed prismCreateContext left a context\n");
+    ++failures;
+  }
+  REQUIRE_OK(prismCreateContext(NULL, &context_options, &ctx));
+  BAD(prismGetContextDevice(NULL, &info), "prismGetContextDevice");
+  BAD(prismGetContextDevice(ctx, NULL), "prismGetContextDevice");
+  BAD(prismSetProgressCallback(NULL, NULL, NULL), "prismSetProgressCallback");
+  prismReleaseContext(NULL);
+
+  /* Scenes. */
+  BAD(prismLoadScene(NULL, &scene), "prismLoadScene");
+  BAD(prismLoadScene(path, NULL), "prismLoadScene");
+  BAD(prismLoadSceneFromString(NULL, "x.json", &scene), "prismLoadSceneFromString");
+  BAD(prismLoadSceneFromString("{}", "x.json", NULL), "prismLoadSceneFromString");
+  BAD(prismNewScene(NULL), "prismNewScene");
+  BAD(prismLoadMeshAsScene(NULL, &scene), "prismLoadMeshAsScene");
+  BAD(prismLoadMeshAsScene(path, NULL), "prismLoadMeshAsScene");
+  REQUIRE_OK(prismLoadScene(path, &scene));
+  BAD(prismGetSceneWarningCount(NULL, &count), "prismGetSceneWarningCount");
+  BAD(prismGetSceneWarningCount(scene, NULL), "prismGetSceneWarningCount");
+  REQUIRE_OK(prismGetSceneWarningCount(scene, &count));
+  BAD(prismGetSceneWarning(NULL, 0, &text), "prismGetSceneWarning");
+  BAD(prismGetSceneWarning(scene, 0, NULL), "prismGetSceneWarning");
+  EXPECT(prismGetSceneWarning(scene, count, &text), PRISM_ERROR_INVALID_ARGUMENT, "prismGetSceneWarning");
+  BAD(prismGetCamera(NULL, &camera), "prismGetCamera");
+  BAD(prismGetCamera(scene, NULL), "prismGetCamera");
+  BAD(prismSetCamera(NULL, &camera), "prismSetCamera");
+  BAD(prismSetCamera(scene, NULL), "prismSetCamera");
+  memset(&camera, 0, sizeof camera); /* struct_size 0 */
+  BAD(prismSetCamera(scene, &camera), "prismSetCamera");
+  camera.struct_size = sizeof camera;
+  REQUIRE_OK(prismGetCamera(scene, &camera));
+  camera.fov_degrees = NAN;
+  BAD(prismSetCamera(scene, &camera), "prismSetCamera");
+
+  /* Lights and meshes. */
+  BAD(prismAddPointLight(NULL, pos, white, 1.0f), "prismAddPointLight");
+  BAD(prismAddPointLight(scene, NULL, white, 1.0f), "prismAddPointLight");
+  BAD(prismAddPointLight(scene, pos, NULL, 1.0f), "prismAddPointLight");
+  BAD(prismAddPointLight(scene, pos, white, -1.0f), "prismAddPointLight");
+  BAD(prismAddAreaLight(NULL, &area), "prismAddAreaLight");
+  BAD(prismAddAreaLight(scene, NULL), "prismAddAreaLight");
+  memset(&area, 0, sizeof area); /* struct_size 0 */
+  BAD(prismAddAreaLight(scene, &area), "prismAddAreaLight");
+  area.struct_size = sizeof area;
+  area.type = 99;
+  BAD(prismAddAreaLight(scene, &area), "prismAddAreaLight");
+  BAD(prismAddMeshFile(NULL, path, NULL, NULL, 0, NULL), "prismAddMeshFile");
+  BAD(prismAddMeshFile(scene, NULL, NULL, NULL, 0, NULL), "prismAddMeshFile");
+  BAD(prismAddMeshArrays(NULL, tri, 3, idx, 1, NULL, NULL, NULL), "prismAddMeshArrays");
+  BAD(prismAddMeshArrays(scene, NULL, 3, idx, 1, NULL, NULL, NULL), "prismAddMeshArrays");
+  BAD(prismAddMeshArrays(scene, tri, 3, NULL, 1, NULL, NULL, NULL), "prismAddMeshArrays");
+  BAD(prismAddMeshArrays(scene, tri, 0, idx, 1, NULL, NULL, NULL), "prismAddMeshArrays");
+  BAD(prismAddMeshArrays(scene, tri, 3, idx, 0, NULL, NULL, NULL), "prismAddMeshArrays");
+  BAD(prismAddMeshArrays(scene, tri, 3, bad_idx, 1, NULL, NULL, NULL), "prismAddMeshArrays");
+  BAD(prismAddMeshArrays(scene, tri, 3, idx, 1, "no-such-material", NULL, NULL), "prismAddMeshArrays");
+  BAD(prismInspectMeshFile(NULL, &report), "prismInspectMeshFile");
+  BAD(prismInspectMeshFile(path, NULL), "prismInspectMeshFile");
+  BAD(prismGetMeshCounts(NULL, &mesh_counts), "prismGetMeshCounts");
+  if (prismGetMeshPlugin(NULL) == NULL || prismGetMeshMaterialName(NULL, 0) != NULL ||
+      prismGetMeshWarningCount(NULL) != 0 || prismGetMeshWarning(NULL, 0) != NULL) {
+    fprintf(stderr, "mesh report getters must answer \"\", NULL or 0 for a NULL report\n");
+    ++failures;
+  }
+  prismReleaseMeshReport(NULL);
+  BAD(prismGetPluginCount(NULL), "prismGetPluginCount");
+  REQUIRE_OK(prismGetPluginCount(&count));
+  BAD(prismGetPluginInfo(0, NULL), "prismGetPluginInfo");
+  EXPECT(prismGetPluginInfo(count, &plugin), PRISM_ERROR_INVALID_ARGUMENT, "prismGetPluginInfo");
+
+  /* Names and enums. */
+  BAD(prismParseAccel(NULL, &accel), "prismParseAccel");
+  BAD(prismParseAccel("bvh", NULL), "prismParseAccel");
+  BAD(prismParseAa(NULL, &aa), "prismParseAa");
+  BAD(prismParseAa("jitter", NULL), "prismParseAa");
+  BAD(prismParseFilter(NULL, &filter), "prismParseFilter");
+  BAD(prismParseFilter("box", NULL), "prismParseFilter");
+  BAD(prismParseFirstHit(NULL, &first_hit), "prismParseFirstHit");
+  BAD(prismParseFirstHit("auto", NULL), "prismParseFirstHit");
+  BAD(prismParseAov(NULL, &aov), "prismParseAov");
+  BAD(prismParseAov("depth", NULL), "prismParseAov");
+  BAD(prismGetAovChannels((PrismAov)99, &u32), "prismGetAovChannels");
+  BAD(prismGetAovChannels(PRISM_AOV_DEPTH, NULL), "prismGetAovChannels");
+  if (prismAccelName((PrismAccel)99) != NULL || prismAaName((PrismAa)99) != NULL ||
+      prismFilterName((PrismFilter)99) != NULL || prismFirstHitName((PrismFirstHit)99) != NULL ||
+      prismStatusName((PrismStatus)999) == NULL) {
+    fprintf(stderr, "names of unknown values: NULL (a status: a text that says unknown)\n");
+    ++failures;
+  }
+
+  /* Rendering, in and out of order. */
+  EXPECT(prismGetAov(ctx, PRISM_AOV_DEPTH, out, 8 * 6), PRISM_ERROR_INVALID_OPERATION, "prismGetAov");
+  EXPECT(prismGetKernelTimeCount(ctx, &u32), PRISM_ERROR_INVALID_OPERATION, "prismGetKernelTimeCount");
+  BAD(prismGetRenderOptions(NULL, &opts), "prismGetRenderOptions");
+  BAD(prismGetRenderOptions(scene, NULL), "prismGetRenderOptions");
+  memset(&opts, 0, sizeof opts);
+  opts.struct_size = sizeof opts;
+  REQUIRE_OK(prismGetRenderOptions(scene, &opts));
+  small = opts;
+  small.width = 8;
+  small.height = 6;
+  small.accel = 99;
+  BAD(prismCheckRenderOptions(&small), "prismCheckRenderOptions");
+  BAD(prismRender(ctx, scene, &small, rgba, NULL), "prismRender");
+  small.accel = PRISM_ACCEL_AUTO;
+  small.width = 0;
+  BAD(prismRender(ctx, scene, &small, rgba, NULL), "prismRender");
+  small.width = 8;
+  small.min_weight = NAN;
+  BAD(prismRender(ctx, scene, &small, rgba, NULL), "prismRender");
+  small.min_weight = opts.min_weight;
+  BAD(prismRender(NULL, scene, &small, rgba, NULL), "prismRender");
+  BAD(prismRender(ctx, NULL, &small, rgba, NULL), "prismRender");
+  BAD(prismRender(ctx, scene, &small, NULL, NULL), "prismRender");
+  small.struct_size = 0;
+  BAD(prismRender(ctx, scene, &small, rgba, NULL), "prismRender");
+  small.struct_size = sizeof small;
+  stats.struct_size = 0;
+  BAD(prismRender(ctx, scene, &small, rgba, &stats), "prismRender");
+  REQUIRE_OK(prismRender(ctx, scene, &small, rgba, NULL));
+  BAD(prismGetAov(NULL, PRISM_AOV_DEPTH, out, 8 * 6), "prismGetAov");
+  BAD(prismGetAov(ctx, PRISM_AOV_DEPTH, NULL, 8 * 6), "prismGetAov");
+  BAD(prismGetAov(ctx, PRISM_AOV_NORMAL, out, 8 * 6), "prismGetAov"); /* needs 3 floats a pixel */
+  BAD(prismGetAov(ctx, (PrismAov)99, out, 8 * 6 * 3), "prismGetAov");
+  EXPECT(prismGetKernelTime(ctx, 0, &text, &seconds, &launches), PRISM_ERROR_INVALID_OPERATION,
+         "prismGetKernelTime"); /* the render was not profiled */
+
+  /* Ray queries. */
+  memset(&ray, 0, sizeof ray);
+  ray.dir[2] = -1;
+  ray.tmax = INFINITY;
+  BAD(prismIntersect(NULL, scene, PRISM_ACCEL_BVH, &ray, &hit, 1, NULL), "prismIntersect");
+  BAD(prismIntersect(ctx, NULL, PRISM_ACCEL_BVH, &ray, &hit, 1, NULL), "prismIntersect");
+  BAD(prismIntersect(ctx, scene, PRISM_ACCEL_BVH, NULL, &hit, 1, NULL), "prismIntersect");
+  BAD(prismIntersect(ctx, scene, PRISM_ACCEL_BVH, &ray, NULL, 1, NULL), "prismIntersect");
+  BAD(prismIntersect(ctx, scene, (PrismAccel)99, &ray, &hit, 1, NULL), "prismIntersect");
+  BAD(prismOccluded(NULL, scene, PRISM_ACCEL_BVH, &ray, &occluded, 1, NULL), "prismOccluded");
+  BAD(prismOccluded(ctx, scene, PRISM_ACCEL_BVH, NULL, &occluded, 1, NULL), "prismOccluded");
+  BAD(prismOccluded(ctx, scene, PRISM_ACCEL_BVH, &ray, NULL, 1, NULL), "prismOccluded");
+  BAD(prismOccluded(ctx, scene, (PrismAccel)99, &ray, &occluded, 1, NULL), "prismOccluded");
+  REQUIRE_OK(prismIntersect(ctx, scene, PRISM_ACCEL_BVH, &ray, &hit, 0, NULL)); /* nothing to do is fine */
+
+  /* Images. */
+  BAD(prismWriteImage(NULL, rgba, 8, 6, 4), "prismWriteImage");
+  BAD(prismWriteImage("out.png", NULL, 8, 6, 4), "prismWriteImage");
+  BAD(prismWriteImage("out.png", rgba, 0, 6, 4), "prismWriteImage");
+  BAD(prismWriteImage("out.png", rgba, 8, 6, 2), "prismWriteImage");
+  EXPECT(prismWriteImage("out.xyz", rgba, 8, 6, 4), PRISM_ERROR_IO, "prismWriteImage"); /* as prism_api.cpp maps ImageError */
+
+  prismReleaseScene(scene);
+  prismReleaseScene(NULL);
+  prismReleaseContext(ctx);
+  (void)none_scene;
+  printf("%d calls checked, %d failed\n", calls, failures);
+  return failures == 0 ? 0 : 1;
+}
