@@ -204,6 +204,38 @@ TEST_CASE("every hit sends one feeler per light in front of it, counted at every
   }
 }
 
+TEST_CASE("hundreds of lights of both kinds: every feeler sent and counted, every pixel finite", "[render][depth]") {
+  // The two mirrors with 600 point lights and 300 two-sample quads, all at
+  // z = 0 and so in front of both mirrors (the quads far to the side, out of
+  // the rays' way): each of a pixel's 11 hits sends 600 + 2 x 300 feelers.
+  // Point lights once met a 512-light buffer limit; area feelers go in runs of
+  // Renderer::kShadowSlots, here several per slice.
+  std::string lights;
+  for (int i = 0; i < 600; ++i)
+    lights += std::string(lights.empty() ? "" : ", ") + R"({"position": [)" + std::to_string(-0.6 + 0.002 * i) +
+              R"(, 0.3, 0], "intensity": 0.001})";
+  for (int i = 0; i < 300; ++i)
+    lights += R"(, {"type": "quad", "corner": [)" + std::to_string(20 + 0.01 * i) +
+              R"(, -1, 0], "edge1": [0.005, 0, 0], "edge2": [0, 2, 0], "samples": 2, "intensity": 0.01})";
+  const std::string json = R"({
+    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 20},
+    "film": {"width": 16, "height": 12},
+    "render": {"max_depth": 10, "min_weight": 0, "background": [0, 0, 0]},
+    "materials": {"mirror": {"reflect": 0.5, "diffuse": [0.1, 0.1, 0.1]}},
+    "lights": [)" + lights + R"(],
+    "objects": [{"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "mirror"},
+                {"type": "plane", "point": [0, 0, 1], "normal": [0, 0, -1], "material": "mirror"}]
+  })";
+  Scene scene = parseScene(json, "many_lights.json");
+  RenderOptions opt = RenderOptions::fromScene(scene);
+  const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * opt.height;
+  RenderResult r = renderScene(scene, opt);
+  CHECK(r.stats.rays_by_kind[RAY_KIND_SHADOW] == (600 + 2 * 300) * 11 * pixels);
+  std::size_t bad = 0;
+  for (float x : r.rgba) bad += !std::isfinite(x);
+  CHECK(bad == 0);
+}
+
 TEST_CASE("auto traces a handful of primitives by brute force, more through the BVH, to the same image",
           "[render][accel]") {
   auto scene_with = [](int spheres) {
