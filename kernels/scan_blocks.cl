@@ -20,6 +20,6 @@ __kernel void scan_blocks(__global const int* counts, int blocks, __global int* 
     feelers += counts[b * RAY_COUNT_COLUMNS + RAY_COUNT_FEELERS];
   }
   for (int kind = 0; kind < RAY_KIND_COUNT; ++kind) totals[kind] = kinds[kind];
-  totals[RAY_KIND_COUNT] = total;
-  totals[RAY_KIND_COUNT + 1] = feelers;
+  totals[RAY_TOTAL_LIVE] = total;
+  totals[RAY_TOTAL_FEELERS] = feelers;
 }

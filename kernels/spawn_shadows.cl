@@ -25,8 +25,8 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
   tags[j] = SLOT_TAG(RAY_KIND_NONE, 0);
   if (s->material < 0) return;
   int l = 0;
-  while (l + 1 < light_count && r >= light_spawned_feelers(&lights[l])) {
-    r -= light_spawned_feelers(&lights[l]);
+  while (l + 1 < light_count && r >= lights[l].samples) { /* point lights have none */
+    r -= lights[l].samples;
     ++l;
   }
   __global const LightGpu* light = &lights[l];

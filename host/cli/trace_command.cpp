@@ -57,11 +57,13 @@ bool readRays(const std::string& path, std::vector<PrismRay>& rays) {
 // Every byte written and the file closed, or false with errno's reason.
 bool writeAll(std::FILE* f, const std::vector<PrismHit>& hits, std::string* reason) {
   const std::size_t n = hits.size();
-  bool ok = std::fwrite(hits.data(), sizeof(PrismHit), n, f) == n;
-  ok = std::fflush(f) == 0 && ok;
-  const int err = errno;
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok) *reason = std::strerror(errno ? errno : err);
+  bool ok = std::fwrite(hits.data(), sizeof(PrismHit), n, f) == n && std::fflush(f) == 0;
+  int err = ok ? 0 : errno;  // the first failure's reason
+  if (std::fclose(f) != 0 && ok) {
+    ok = false;
+    err = errno;
+  }
+  if (!ok) *reason = std::strerror(err);
   return ok;
 }
 

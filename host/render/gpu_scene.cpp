@@ -189,8 +189,9 @@ LightGpu flattenLight(const Light& l, int spp) {
       break;
   }
   put4(g.color, l.color * l.intensity, area);
-  // A point light needs one feeler; an area light's `samples` are per pixel.
-  g.samples = l.type == LightType::Point ? 1 : std::max(1, (l.samples + spp - 1) / spp);
+  // The feelers spawn_shadows sends per hit: an area light's `samples` are per
+  // pixel; a point light's one feeler is traced by shade, so it spawns none.
+  g.samples = l.type == LightType::Point ? 0 : std::max(1, (l.samples + spp - 1) / spp);
   return g;
 }
 

@@ -16,9 +16,8 @@ namespace prism {
 namespace {
 
 constexpr int kCompactBlock = 256;  // slots counted by one work-item of count_rays
-// What scan_blocks totals: the live rays of each kind, their sum, the feelers
-// shade traced (kernels/scan_blocks.cl).
-constexpr int kTotals = RAY_KIND_COUNT + 2;
+
+int compactBlocks(size_t slots) { return static_cast<int>((slots + kCompactBlock - 1) / kCompactBlock); }
 
 // Device bytes a sample takes: its rgba film entry and its (x, y) position.
 constexpr std::uint64_t kFilmBytesPerSample = 4 * sizeof(float);
@@ -104,9 +103,12 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_spp = sampling.spp;
   m_strata = sampling.mode == AaMode::Random ? 0 : sampling.spp;
   m_group_base = 0;
-  m_shadow_slots = 0;  // shade traces point lights' feelers itself
-  for (const LightGpu& l : gpu.lights)
-    if (l.type != LIGHT_POINT) m_shadow_slots += l.samples;
+  m_shadow_slots = 0;
+  m_point_lights = false;
+  for (const LightGpu& l : gpu.lights) {
+    m_shadow_slots += l.samples;  // 0 for point lights
+    m_point_lights = m_point_lights || l.type == LIGHT_POINT;
+  }
   if (options.profile) m_context.profile().start();
   struct Reset {
     Renderer* r;
@@ -168,7 +170,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   const size_t max_blocks = (std::max(2 * kSliceRays, kShadowSlots) + kCompactBlock - 1) / kCompactBlock;
   m_counts.reserve(m_context, max_blocks * RAY_COUNT_COLUMNS * sizeof(std::int32_t));
   m_offsets.reserve(m_context, max_blocks * sizeof(std::int32_t));
-  m_totals.reserve(m_context, kTotals * sizeof(std::int32_t));
+  m_totals.reserve(m_context, RAY_TOTALS * sizeof(std::int32_t));
   m_chunk_xy.reserve(m_context, kSliceRays * 2 * sizeof(float));
   m_chunk_aov.reserve(m_context, kSliceRays * sizeof(std::int32_t));
 
@@ -406,7 +408,7 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
   // At the last depth the children's slots are all empty, but they still hold
   // the count of point-light feelers.
   if (depth >= opt.max_depth) {
-    countRays(m_child_tags, 2 * n, m_stats->rays_by_kind);
+    if (m_point_lights) countRays(m_child_tags, 2 * n, m_stats->rays_by_kind);
     return;
   }
   size_t child_count = compact(m_children, m_child_tags, 2 * n, m_levels[depth + 1], m_stats->rays_by_kind);
@@ -442,22 +444,28 @@ void Renderer::traceShadows(size_t surfaces) {
 }
 
 size_t Renderer::countRays(const Buffer& tags, size_t count, std::array<std::uint64_t, 4>& kinds) {
-  const int blocks = static_cast<int>((count + kCompactBlock - 1) / kCompactBlock);
+  const int blocks = compactBlocks(count);
   m_context.launch(m_count).arg(tags).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_counts).run(blocks);
   m_context.launch(m_scan).arg(m_counts).arg(blocks).arg(m_offsets).arg(m_totals).run(1);
-  std::int32_t totals[kTotals];
+  std::int32_t totals[RAY_TOTALS];
   m_totals.read(totals, sizeof totals);
   for (int k = 0; k < RAY_KIND_COUNT; ++k) kinds[k] += static_cast<std::uint64_t>(totals[k]);
-  kinds[RAY_KIND_SHADOW] += static_cast<std::uint64_t>(totals[RAY_KIND_COUNT + 1]);
-  return static_cast<size_t>(totals[RAY_KIND_COUNT]);
+  kinds[RAY_KIND_SHADOW] += static_cast<std::uint64_t>(totals[RAY_TOTAL_FEELERS]);
+  return static_cast<size_t>(totals[RAY_TOTAL_LIVE]);
 }
 
 size_t Renderer::compact(const Buffer& in, const Buffer& tags, size_t count, Buffer& out,
                          std::array<std::uint64_t, 4>& kinds) {
   const size_t total = countRays(tags, count, kinds);
   if (total == 0) return 0;
-  const int blocks = static_cast<int>((count + kCompactBlock - 1) / kCompactBlock);
-  m_context.launch(m_scatter).arg(in).arg(tags).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_offsets).arg(out).run(blocks);
+  m_context.launch(m_scatter)
+      .arg(in)
+      .arg(tags)
+      .arg(static_cast<int>(count))
+      .arg(kCompactBlock)
+      .arg(m_offsets)
+      .arg(out)
+      .run(compactBlocks(count));
   return static_cast<size_t>(total);
 }
 

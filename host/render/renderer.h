@@ -146,6 +146,7 @@ class Renderer {
   int m_spp = 1;           // samples per pixel of the per-pixel modes (1 otherwise)
   int m_strata = 1;        // samples that share strata in the sampler (0: independent, aa random)
   long long m_group_base = 0;  // adaptive: the batch's first position, so strata groups stay distinct
+  bool m_point_lights = false;  // shade traces feelers, which the last depth still counts
   int m_shadow_slots = 0;  // spawned feelers per shaded point: the area lights' samples summed
   size_t m_film_batch_slices = 256;
   AccelBuildOptions m_accel_build;

@@ -119,6 +119,7 @@ class SceneParser {
   void parse(const ParsedJson& parsed) {
     const Json& root = parsed.root;
     m_material_order = &parsed.material_order;
+    m_material_index[m_scene.materials[0].name] = 0;  // the built-in default
     if (!root.is_object()) fail("", "expected a JSON object at top level, got " + describe(root));
     static const std::vector<std::string> kTop = {"camera",    "film",   "render",
                                                   "materials", "lights", "objects"};
@@ -570,7 +571,6 @@ class SceneParser {
 
   int materialIndex(const Json& v, const std::string& path) const {
     const std::string name = string(v, path, "a material name (a string)");
-    if (name == m_scene.materials[0].name) return 0;
     auto it = m_material_index.find(name);
     if (it != m_material_index.end()) return it->second;
     constexpr std::size_t kListed = 20;  // an error names at most this many
@@ -645,7 +645,7 @@ class SceneParser {
   std::string m_base_dir;  // mesh files are relative to the scene file's folder
   Scene& m_scene;
   const std::vector<std::string>* m_material_order = nullptr;  // the materials' keys in file order
-  std::unordered_map<std::string, int> m_material_index;       // name -> index, but "default" (0)
+  std::unordered_map<std::string, int> m_material_index;       // name -> index into m_scene.materials
 };
 
 // nlohmann's messages start with "[json.exception.parse_error.101] parse error at

@@ -14,12 +14,6 @@
 #include "shading/frame.h"
 #include "shared/light_gpu.h"
 
-/* The feelers spawn_shadows sends to this light from each shaded point: an area
- * light's samples; none for a point light, whose one feeler shade traces. */
-inline int light_spawned_feelers(__global const LightGpu* light) {
-  return light->type == LIGHT_POINT ? 0 : light->samples;
-}
-
 /* The point on the light that a shadow feeler from p goes to, for sample u in
  * [0, 1)^2: unit direction *dir, distance *dist, and *scale, the factor of the
  * local model's term (rgb). Returns false when the sample brings nothing. */

@@ -16,7 +16,8 @@ typedef struct LightGpu {
   float edge2[4];
   float normal[4];   /* quad, disk: unit normal (both faces emit) */
   int type;          /* LIGHT_* */
-  int samples;       /* shadow feelers per hit (the host already divided by spp) */
+  int samples;       /* feelers spawn_shadows sends per hit (the host already divided by spp);
+                        0 for a point light, whose one feeler shade traces */
   int pad[2];
 } LightGpu;
 

@@ -13,6 +13,11 @@
  * then the point-light feelers traced by shade. */
 #define RAY_COUNT_FEELERS RAY_KIND_COUNT
 #define RAY_COUNT_COLUMNS (RAY_KIND_COUNT + 1)
+/* What scan_blocks totals for the host: the live rays of each kind, then their
+ * sum, then the point-light feelers. */
+#define RAY_TOTAL_LIVE RAY_KIND_COUNT
+#define RAY_TOTAL_FEELERS (RAY_KIND_COUNT + 1)
+#define RAY_TOTALS (RAY_KIND_COUNT + 2)
 
 /* A queue's slots have tags beside them, one int each, so that compaction
  * reads four bytes per slot rather than a ray, and a producer writes a ray only

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "c_check.h"
 #include "prism.h"
 
 static int failures = 0;
@@ -30,15 +31,6 @@ static void expect(PrismStatus status, PrismStatus want, const char* name, const
 
 #define EXPECT(call, want, name) expect((call), (want), (name), #call, __LINE__)
 #define BAD(call, name) EXPECT(call, PRISM_ERROR_INVALID_ARGUMENT, name)
-
-#define REQUIRE_OK(call)                                                                                  \
-  do {                                                                                                    \
-    PrismStatus s_ = (call);                                                                              \
-    if (s_ != PRISM_OK) {                                                                                 \
-      fprintf(stderr, "line %d: %s returned %s: %s\n", __LINE__, #call, prismStatusName(s_), prismGetLastError()); \
-      return 1;                                                                                           \
-    }                                                                                                     \
-  } while (0)
 
 int main(int argc, char** argv) {
   char path[4096];
@@ -78,7 +70,7 @@ int main(int argc, char** argv) {
 
   /* Devices and contexts. */
   BAD(prismGetDeviceCount(NULL), "prismGetDeviceCount");
-  REQUIRE_OK(prismGetDeviceCount(&count));
+  CHECK_OK(prismGetDeviceCount(&count));
   BAD(prismGetDeviceInfo(0, NULL), "prismGetDeviceInfo");
   EXPECT(prismGetDeviceInfo(count, &info), PRISM_ERROR_INVALID_ARGUMENT, "prismGetDeviceInfo");
   prismDefaultContextOptions(NULL); /* a no-op, not a crash */
@@ -89,7 +81,7 @@ int main(int argc, char** argv) {
     fprintf(stderr, "a failed prismCreateContext left a context\n");
     ++failures;
   }
-  REQUIRE_OK(prismCreateContext(NULL, &context_options, &ctx));
+  CHECK_OK(prismCreateContext(NULL, &context_options, &ctx));
   BAD(prismGetContextDevice(NULL, &info), "prismGetContextDevice");
   BAD(prismGetContextDevice(ctx, NULL), "prismGetContextDevice");
   BAD(prismSetProgressCallback(NULL, NULL, NULL), "prismSetProgressCallback");
@@ -103,10 +95,10 @@ int main(int argc, char** argv) {
   BAD(prismNewScene(NULL), "prismNewScene");
   BAD(prismLoadMeshAsScene(NULL, &scene), "prismLoadMeshAsScene");
   BAD(prismLoadMeshAsScene(path, NULL), "prismLoadMeshAsScene");
-  REQUIRE_OK(prismLoadScene(path, &scene));
+  CHECK_OK(prismLoadScene(path, &scene));
   BAD(prismGetSceneWarningCount(NULL, &count), "prismGetSceneWarningCount");
   BAD(prismGetSceneWarningCount(scene, NULL), "prismGetSceneWarningCount");
-  REQUIRE_OK(prismGetSceneWarningCount(scene, &count));
+  CHECK_OK(prismGetSceneWarningCount(scene, &count));
   BAD(prismGetSceneWarning(NULL, 0, &text), "prismGetSceneWarning");
   BAD(prismGetSceneWarning(scene, 0, NULL), "prismGetSceneWarning");
   EXPECT(prismGetSceneWarning(scene, count, &text), PRISM_ERROR_INVALID_ARGUMENT, "prismGetSceneWarning");
@@ -117,7 +109,7 @@ int main(int argc, char** argv) {
   memset(&camera, 0, sizeof camera); /* struct_size 0 */
   BAD(prismSetCamera(scene, &camera), "prismSetCamera");
   camera.struct_size = sizeof camera;
-  REQUIRE_OK(prismGetCamera(scene, &camera));
+  CHECK_OK(prismGetCamera(scene, &camera));
   camera.fov_degrees = NAN;
   BAD(prismSetCamera(scene, &camera), "prismSetCamera");
 
@@ -152,7 +144,7 @@ int main(int argc, char** argv) {
   }
   prismReleaseMeshReport(NULL);
   BAD(prismGetPluginCount(NULL), "prismGetPluginCount");
-  REQUIRE_OK(prismGetPluginCount(&count));
+  CHECK_OK(prismGetPluginCount(&count));
   BAD(prismGetPluginInfo(0, NULL), "prismGetPluginInfo");
   EXPECT(prismGetPluginInfo(count, &plugin), PRISM_ERROR_INVALID_ARGUMENT, "prismGetPluginInfo");
 
@@ -183,7 +175,7 @@ int main(int argc, char** argv) {
   BAD(prismGetRenderOptions(scene, NULL), "prismGetRenderOptions");
   memset(&opts, 0, sizeof opts);
   opts.struct_size = sizeof opts;
-  REQUIRE_OK(prismGetRenderOptions(scene, &opts));
+  CHECK_OK(prismGetRenderOptions(scene, &opts));
   small = opts;
   small.width = 8;
   small.height = 6;
@@ -205,7 +197,7 @@ int main(int argc, char** argv) {
   small.struct_size = sizeof small;
   stats.struct_size = 0;
   BAD(prismRender(ctx, scene, &small, rgba, &stats), "prismRender");
-  REQUIRE_OK(prismRender(ctx, scene, &small, rgba, NULL));
+  CHECK_OK(prismRender(ctx, scene, &small, rgba, NULL));
   BAD(prismGetAov(NULL, PRISM_AOV_DEPTH, out, 8 * 6), "prismGetAov");
   BAD(prismGetAov(ctx, PRISM_AOV_DEPTH, NULL, 8 * 6), "prismGetAov");
   BAD(prismGetAov(ctx, PRISM_AOV_NORMAL, out, 8 * 6), "prismGetAov"); /* needs 3 floats a pixel */
@@ -226,7 +218,7 @@ int main(int argc, char** argv) {
   BAD(prismOccluded(ctx, scene, PRISM_ACCEL_BVH, NULL, &occluded, 1, NULL), "prismOccluded");
   BAD(prismOccluded(ctx, scene, PRISM_ACCEL_BVH, &ray, NULL, 1, NULL), "prismOccluded");
   BAD(prismOccluded(ctx, scene, (PrismAccel)99, &ray, &occluded, 1, NULL), "prismOccluded");
-  REQUIRE_OK(prismIntersect(ctx, scene, PRISM_ACCEL_BVH, &ray, &hit, 0, NULL)); /* nothing to do is fine */
+  CHECK_OK(prismIntersect(ctx, scene, PRISM_ACCEL_BVH, &ray, &hit, 0, NULL)); /* nothing to do is fine */
 
   /* Images. */
   BAD(prismWriteImage(NULL, rgba, 8, 6, 4), "prismWriteImage");

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "c_check.h"
 #include "prism.h"
 
 static int failures = 0;
@@ -17,24 +18,6 @@ static int cancel_at_once(void* user, double fraction_done) {
   ++*calls;
   return 1;
 }
-
-#define CHECK(cond)                                                    \
-  do {                                                                 \
-    if (!(cond)) {                                                     \
-      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++failures;                                                      \
-    }                                                                  \
-  } while (0)
-
-#define CHECK_OK(call)                                                                        \
-  do {                                                                                        \
-    PrismStatus s_ = (call);                                                                  \
-    if (s_ != PRISM_OK) {                                                                     \
-      fprintf(stderr, "%s:%d: %s returned %s: %s\n", __FILE__, __LINE__, #call, prismStatusName(s_), \
-              prismGetLastError());                                                           \
-      return 1;                                                                               \
-    }                                                                                         \
-  } while (0)
 
 int main(int argc, char** argv) {
   char path[4096];

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "kernels/shared/ray_gpu.h"
 #include "render/renderer.h"
@@ -39,6 +40,21 @@ const char* kLitSphere = R"({
   "lights": [{"position": [4, 5, 6], "color": [1, 0.9, 0.8], "intensity": 1.5}],
   "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]
 })";
+
+// Two facing mirrors at z = -1 and z = 1, k_refl 0.5 and a little diffuse, the
+// camera between them looking at the far one, max depth 10, no weight cut-off,
+// lit by `lights` (the inside of a JSON array).
+std::string litMirrors(const std::string& lights) {
+  return R"({
+    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 20},
+    "film": {"width": 16, "height": 12},
+    "render": {"max_depth": 10, "min_weight": 0, "background": [0, 0, 0]},
+    "materials": {"mirror": {"reflect": 0.5, "diffuse": [0.1, 0.1, 0.1]}},
+    "lights": [)" + lights + R"(],
+    "objects": [{"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "mirror"},
+                {"type": "plane", "point": [0, 0, 1], "normal": [0, 0, -1], "material": "mirror"}]
+  })";
+}
 
 }  // namespace
 
@@ -177,17 +193,10 @@ TEST_CASE("every hit sends one feeler per light in front of it, counted at every
   // 3 samples, faces both: shade traces the point lights' feelers itself and
   // spawn_shadows the quad's, and the statistics must count both kinds,
   // including at the last depth, whose children are never traced.
-  const char* json = R"({
-    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 20},
-    "film": {"width": 16, "height": 12},
-    "render": {"max_depth": 10, "min_weight": 0, "background": [0, 0, 0]},
-    "materials": {"mirror": {"reflect": 0.5, "diffuse": [0.1, 0.1, 0.1]}},
-    "lights": [{"position": [0.2, 0.3, 0]}, {"position": [-0.4, 0.1, 0]}, {"position": [0, 0, -2]},
-               {"type": "quad", "corner": [20, -1, 0], "edge1": [1, 0, 0], "edge2": [0, 2, 0], "samples": 3}],
-    "objects": [{"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "mirror"},
-                {"type": "plane", "point": [0, 0, 1], "normal": [0, 0, -1], "material": "mirror"}]
-  })";
-  Scene scene = parseScene(json, "lit_mirrors.json");
+  Scene scene = parseScene(litMirrors(R"({"position": [0.2, 0.3, 0]}, {"position": [-0.4, 0.1, 0]},
+      {"position": [0, 0, -2]}, {"type": "quad", "corner": [20, -1, 0], "edge1": [1, 0, 0], "edge2": [0, 2, 0],
+      "samples": 3})"),
+                           "lit_mirrors.json");
   RenderOptions opt = RenderOptions::fromScene(scene);
   const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * opt.height;
   for (FirstHitMode first_hit : {FirstHitMode::Trace, FirstHitMode::ZBuffer}) {
@@ -217,16 +226,7 @@ TEST_CASE("hundreds of lights of both kinds: every feeler sent and counted, ever
   for (int i = 0; i < 300; ++i)
     lights += R"(, {"type": "quad", "corner": [)" + std::to_string(20 + 0.01 * i) +
               R"(, -1, 0], "edge1": [0.005, 0, 0], "edge2": [0, 2, 0], "samples": 2, "intensity": 0.01})";
-  const std::string json = R"({
-    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov": 20},
-    "film": {"width": 16, "height": 12},
-    "render": {"max_depth": 10, "min_weight": 0, "background": [0, 0, 0]},
-    "materials": {"mirror": {"reflect": 0.5, "diffuse": [0.1, 0.1, 0.1]}},
-    "lights": [)" + lights + R"(],
-    "objects": [{"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "mirror"},
-                {"type": "plane", "point": [0, 0, 1], "normal": [0, 0, -1], "material": "mirror"}]
-  })";
-  Scene scene = parseScene(json, "many_lights.json");
+  Scene scene = parseScene(litMirrors(lights), "many_lights.json");
   RenderOptions opt = RenderOptions::fromScene(scene);
   const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * opt.height;
   RenderResult r = renderScene(scene, opt);
