@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "accel_workloads.h"
+#include "bench_data.h"
 #include "device/context.h"
 #include "device/device_list.h"
 #include "mesh/mesh_loader.h"
@@ -149,21 +150,6 @@ void writePlots(const std::string& dir, const std::vector<BenchRow>& rows) {
 
 }  // namespace
 
-std::vector<std::string> defaultLadder(const std::string& data_dir) {
-  static const char* files[] = {"bunny/bun_zipper_res4.ply",  "bunny/bun_zipper_res3.ply",
-                                "spot/spot.obj",              "teapot/teapot.obj",
-                                "mori_knob/testObj.obj",      "bunny/bun_zipper_res2.ply",
-                                "dragon/dragon_vcg_43k.ply",  "bunny/bun_zipper.ply",
-                                "armadillo/armadillo.obj",    "dragon/dragon_100k_vcgflags.ply",
-                                "bunny/bunny_loop2_1.1M.ply"};
-  std::vector<std::string> out;
-  for (const char* f : files) {
-    std::string p = data_dir + "/" + f;
-    if (std::filesystem::exists(p)) out.push_back(p);
-  }
-  return out;
-}
-
 std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
   DeviceDescription device = selectDevice(options.device);
   Context context(device, true);
@@ -192,7 +178,9 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
   std::vector<std::string> inputs = options.files;
   std::vector<std::size_t> sizes = options.sizes;
   if (inputs.empty()) {
-    inputs = defaultLadder(options.data_dir);
+    BenchLadder ladder = benchLadder(options.data_dir);
+    for (const std::string& note : ladder.notes) std::cout << "ladder: " << note << "\n";
+    inputs = ladder.files;
     if (!options.sizes_given) sizes = {1000, 10000, 100000, 1000000};
   }
   std::vector<BenchRow> rows;

@@ -17,7 +17,7 @@ struct AccelBenchOptions {
   std::vector<std::string> files;     // mesh files or JSON scenes; empty = the shared benchmark ladder
   std::vector<std::size_t> sizes;     // generated tori (triangles)
   bool sizes_given = false;
-  std::string data_dir;               // shared meshes folder
+  std::string data_dir;               // --data: searched first for the ladder (bench_data.h)
   std::string out_dir = "bench-out";  // CSV, JSON and PNG go here
   std::vector<AccelKind> structures = {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp};
   int camera = 1024;                  // primary rays: camera x camera
@@ -30,8 +30,5 @@ struct AccelBenchOptions {
 // Runs the benchmark, printing the table as it goes; returns the rows (also
 // written to out_dir). Throws on unusable input (the message names the file).
 std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options);
-
-// The shared meshes of the benchmark ladder (shared/data/README.md) under `data_dir`.
-std::vector<std::string> defaultLadder(const std::string& data_dir);
 
 }  // namespace prism::bench

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "bench_data.h"
 #include "accel_workloads.h"
 #include "accel_bench.h"
 #include "device/context.h"
@@ -114,11 +115,10 @@ const char* const kFirstHitUsage =
     "  --repeat N     timings are the median of N runs (default 3)\n"
     "  --profile      also print each z-buffer kernel's device time (one run)\n"
     "  --out DIR      where firsthit.csv and firsthit.png go (default bench-out)\n"
-    "  --data DIR     folder of the shared meshes (default: the source tree's)\n";
+    "  --data DIR     folder searched first for the ladder's meshes (default: $PRISM_BENCH_DATA)\n";
 
 int firstHitMain(const std::vector<std::string>& args) {
   FirstHitBenchOptions options;
-  options.data_dir = PRISM_SOURCE_DIR "/../shared/data/meshes";
   options.command = "prism-bench";
   for (const std::string& a : args) options.command += " " + a;
   auto usage = [](const std::string& message) {
@@ -181,8 +181,12 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
   DeviceDescription device = selectDevice(options.device);
   Context context(device, true);
   std::filesystem::create_directories(options.out_dir);
-  std::vector<std::string> inputs = options.files.empty() ? defaultLadder(options.data_dir) : options.files;
-  if (inputs.empty()) throw std::runtime_error("no meshes found under " + options.data_dir + " (use --data DIR or FILES)");
+  std::vector<std::string> inputs = options.files;
+  if (inputs.empty()) {
+    BenchLadder ladder = benchLadder(options.data_dir);
+    for (const std::string& note : ladder.notes) std::cout << "ladder: " << note << "\n";
+    inputs = ladder.files;
+  }
   std::cout << "device: " << device.name << " (" << device.platform_name << ", driver " << device.driver_version << ", "
             << device.compute_units << " compute units)\n"
             << "samples: " << options.width << "x" << options.height

@@ -14,7 +14,7 @@ namespace prism::bench {
 struct FirstHitBenchOptions {
   std::string device;                 // OpenCL device selector ("" = first GPU, else first device)
   std::vector<std::string> files;     // mesh files; empty = the shared benchmark ladder
-  std::string data_dir;               // shared meshes folder
+  std::string data_dir;               // --data: searched first for the ladder (bench_data.h)
   std::string out_dir = "bench-out";  // firsthit.csv and firsthit.png go here
   int width = 1024, height = 1024;    // one primary sample per pixel, through the centre
   int repeats = 3;                    // timings are the median of this many runs

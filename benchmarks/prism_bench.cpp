@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "accel_bench.h"
+#include "bench_data.h"
 #include "distributed_bench.h"  // prism-bench distributed: parses its own options
 #include "firsthit_bench.h"  // prism-bench firsthit: parses its own options
 #include "povray_bench.h"    // prism-bench povray: parses its own options
@@ -22,11 +23,13 @@ const char* kUsage =
     "       prism-bench firsthit [options] [FILES...]   (see prism-bench firsthit --help)\n"
     "       prism-bench distributed [options]          (see prism-bench distributed --help)\n"
     "       prism-bench povray [options]               (see prism-bench povray --help)\n"
+    "       prism-bench mesh [--data DIR] NAME         the path of one ladder mesh, e.g.\n"
+    "                                                  bunny/bunny_loop2_1.1M.ply (made if needed)\n"
     "\n"
     "Builds each acceleration structure over each scene and traces the same rays\n"
     "through it and through Intel Embree (rtcIntersect1, as many threads as the\n"
     "device has compute units). FILES are mesh files (any format a plugin reads)\n"
-    "or JSON scenes; without FILES, the shared benchmark meshes and generated\n"
+    "or JSON scenes; without FILES, the benchmark ladder of real meshes and generated\n"
     "bumpy tori of 1k, 10k, 100k and 1M triangles.\n"
     "\n"
     "options:\n"
@@ -37,7 +40,11 @@ const char* kUsage =
     "  --camera N          N x N primary rays (default 1024)\n"
     "  --random N          incoherent random rays (default 1048576)\n"
     "  --repeat N          timings are the median of N runs (default 3)\n"
-    "  --data DIR          folder of the shared meshes (default: the source tree's)\n"
+    "  --data DIR          folder searched first for the ladder's meshes (default:\n"
+    "                      $PRISM_BENCH_DATA); then ../shared/data/meshes beside the\n"
+    "                      source tree, then tests/data/meshes. The 1.1M-triangle bunny,\n"
+    "                      if none has it, is made from the 69k one by Loop subdivision\n"
+    "                      and cached in the build tree; missing meshes are skipped\n"
     "  --no-embree         leave out the Embree reference\n";
 
 [[noreturn]] void usageError(const std::string& message) {
@@ -70,6 +77,28 @@ std::size_t parseCount(const std::string& option, const std::string& text) {
   return static_cast<std::size_t>(v) * scale;
 }
 
+// prism-bench mesh [--data DIR] NAME: for scripts that need one ladder mesh
+// (benchmarks/mesh_load/run.sh), found or made the way the ladder is.
+int meshPathMain(const std::vector<std::string>& args) {
+  std::string data_dir, name;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--data" && i + 1 < args.size())
+      data_dir = args[++i];
+    else if (!args[i].empty() && args[i][0] != '-' && name.empty())
+      name = args[i];
+    else
+      usageError("mesh: unexpected argument '" + args[i] + "'");
+  }
+  if (name.empty()) usageError("mesh: needs a NAME such as bunny/bunny_loop2_1.1M.ply");
+  try {
+    std::cout << prism::bench::findBenchMesh(name, data_dir) << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "prism-bench: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -81,10 +110,10 @@ int main(int argc, char** argv) {
   if (args[0] == "firsthit") return prism::bench::firstHitMain(args);
   if (args[0] == "distributed") return prism::bench::distributedMain(args);
   if (args[0] == "povray") return prism::bench::povrayMain(args);
+  if (args[0] == "mesh") return meshPathMain(args);
   if (args[0] != "accel")
-    usageError("unknown command '" + args[0] + "' (expected accel, firsthit, distributed or povray)");
+    usageError("unknown command '" + args[0] + "' (expected accel, firsthit, distributed, povray or mesh)");
   prism::bench::AccelBenchOptions options;
-  options.data_dir = PRISM_SOURCE_DIR "/../shared/data/meshes";
   options.command = "prism-bench";
   for (const std::string& a : args) options.command += " " + a;
   for (std::size_t i = 1; i < args.size(); ++i) {

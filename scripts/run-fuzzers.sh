@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/, clang with ASan + UBSan) into
 # build-fuzz/ and runs each for $PRISM_FUZZ_SECONDS seconds (default 60),
-# seeded with the shared mesh corpus (the scene loader: with scenes/). Fails if
+# seeded with the corpus in tests/data (the scene loader: with scenes/). Fails if
 # any target finds a crash, a sanitizer error, a leak, a timeout (a hang) or an
 # out-of-memory.
 # Usage: scripts/run-fuzzers.sh [obj|ply|off|scene ...]   (default: all four)
@@ -9,7 +9,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PRISM_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${PRISM_FUZZ_SECONDS:-60}"
-data="$root/../shared/data"
+data="$root/tests/data"
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(obj ply off scene)
 
@@ -25,8 +25,8 @@ for t in "${targets[@]}"; do
   corpus="$build/corpus/$t"        # new inputs go here; kept between runs
   artifacts="$build/artifacts/$t/" # crashing inputs land here
   mkdir -p "$corpus" "$artifacts"
-  # Seeds: every file of the format from the shared corpus, good and bad,
-  # plus the smaller benchmark meshes (inputs over -max_len are cut).
+  # Seeds: every file of the format from the corpus, good and bad,
+  # plus the test meshes (inputs over -max_len are cut).
   seed_dir="$build/seeds/$t"
   rm -rf "$seed_dir" && mkdir -p "$seed_dir"
   if [ "$t" = scene ]; then

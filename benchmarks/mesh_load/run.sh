@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Load time and peak memory per mesh format, prism's plugins next to
-# OpenMesh's read_mesh, on the largest mesh of shared/data/meshes
-# (bunny_loop2_1.1M.ply, binary little-endian PLY, 557,164 vertices,
-# 1,111,216 triangles), converted to ASCII PLY, OBJ and OFF first. Each load
+# OpenMesh's read_mesh, on the largest mesh of the benchmark ladder
+# (bunny_loop2_1.1M.ply, found or made by `prism-bench mesh`: binary
+# little-endian PLY, 1,111,216 triangles), converted to ASCII PLY, OBJ and OFF first. Each load
 # runs in its own process (peak RSS is per process); the best time and the
 # largest peak of $RUNS runs (default 3) are shown. Prints a Markdown table.
 # Usage: benchmarks/mesh_load/run.sh [BUILD_DIR]   (needs mesh_load_bench built)
@@ -11,7 +11,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build="${1:-$root/build}"
 bench="${MESH_LOAD_BENCH:-$build/benchmarks/mesh_load/mesh_load_bench}"
 runs="${RUNS:-3}"
-src="$root/../shared/data/meshes/bunny/bunny_loop2_1.1M.ply"
+src="$("$build/benchmarks/prism-bench" mesh bunny/bunny_loop2_1.1M.ply)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 

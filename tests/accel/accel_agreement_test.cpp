@@ -2,7 +2,7 @@
 // answers on the same rays: the same closest primitive with bit-identical t,
 // u and v (up to exact ties in t), the same occlusion, and the same
 // transmittance through semitransparent primitives. Over a scene with every
-// primitive kind, procedural meshes and the shared meshes, with camera rays,
+// primitive kind, procedural meshes and real meshes, with camera rays,
 // random rays, shadow rays and rays aimed at vertices and edges.
 #include <catch2/catch.hpp>
 
@@ -212,10 +212,10 @@ TEST_CASE("all structures agree on procedural meshes", "[accel]") {
   checkScene(meshScene("soup20k", triangleSoup(20000, 3, 0.02f)), 20000, 96, 3000);
 }
 
-TEST_CASE("all structures agree on the shared meshes", "[accel]") {
+TEST_CASE("all structures agree on real meshes", "[accel]") {
   for (const char* file : {"bunny/bun_zipper_res2.ply", "teapot/teapot.obj", "cornell_box/CornellBox-Original.obj",
                            "dragon/dragon_vcg_43k.ply"}) {
-    SharedMesh mesh = loadSharedMesh(file);
+    SharedMesh mesh = loadTestMesh(file);
     checkScene(meshScene(file, *mesh), 20000, 128, 3000);
   }
 }

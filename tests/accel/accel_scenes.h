@@ -1,7 +1,7 @@
 // Scenes the acceleration-structure tests share: a mixed analytic + mesh scene
 // with every primitive kind (transformed, degenerate, semitransparent, planes,
 // triangles lying on the octree's and the BSP's splitting planes), procedural
-// meshes, and the shared meshes in ../shared/data/meshes through the plugins.
+// meshes, and the real meshes in tests/data/meshes through the plugins.
 #pragma once
 
 #include <cmath>
@@ -12,8 +12,7 @@
 #include "accel_workloads.h"
 #include "kernels/shared/material_gpu.h"
 #include "kernels/shared/object_gpu.h"
-#include "mesh/mesh_loader.h"
-#include "mesh/plugin_registry.h"
+#include "support/test_data.h"
 
 namespace prism::test {
 
@@ -23,17 +22,7 @@ struct AccelScene {
   std::vector<MaterialGpu> materials;  // empty: all opaque
 };
 
-inline std::string sharedMeshDir() { return PRISM_SOURCE_DIR "/../shared/data/meshes"; }
-
-// The plugins built next to the tests (build/plugins).
-inline const PluginRegistry& testPluginRegistry() {
-  static PluginRegistry registry({PRISM_BINARY_DIR "/plugins"});
-  return registry;
-}
-
-inline SharedMesh loadSharedMesh(const std::string& relative) {
-  return loadMeshFile(sharedMeshDir() + "/" + relative, testPluginRegistry());
-}
+using prism_test::loadTestMesh;
 
 inline ObjectGpu identityObject(int type, int material) {
   ObjectGpu g{};

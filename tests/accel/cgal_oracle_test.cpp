@@ -134,9 +134,9 @@ void checkAgainstOracle(const AccelScene& scene, int camera, std::size_t random)
 
 }  // namespace
 
-TEST_CASE("prism's structures match CGAL's AABB tree on the shared meshes", "[accel][cgal]") {
+TEST_CASE("prism's structures match CGAL's AABB tree on real meshes", "[accel][cgal]") {
   for (const char* file : {"bunny/bun_zipper_res2.ply", "spot/spot.obj", "suzanne/suzanne.obj"}) {
-    SharedMesh mesh = loadSharedMesh(file);
+    SharedMesh mesh = loadTestMesh(file);
     checkAgainstOracle(meshScene(file, *mesh), 96, 10000);
   }
 }

@@ -1,4 +1,4 @@
-// Every malformed file of the shared corpus (shared/data/formats/bad/) is
+// Every malformed file of the corpus (tests/data/formats/bad/) is
 // refused -- with a message naming the file, in bounded time, without
 // crashing the process. OpenMesh 9 hangs on two of them and aborts on one.
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 #include "plugin_test_support.h"
 
 TEST_CASE("every malformed corpus file is refused, naming the file, in bounded time", "[plugins][corpus][bad]") {
-  const std::string bad = prism_test::dataDir() + "/formats/bad";
+  const std::string bad = prism_test::testDataDir() + "/formats/bad";
   int files = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(bad)) {
     if (!entry.is_regular_file() || entry.path().extension() == ".mtl") continue;  // MTLs come with their OBJ
@@ -25,7 +25,7 @@ TEST_CASE("every malformed corpus file is refused, naming the file, in bounded t
 }
 
 TEST_CASE("malformed files are refused for the right reason", "[plugins][corpus][bad]") {
-  const std::string bad = prism_test::dataDir() + "/formats/bad/";
+  const std::string bad = prism_test::testDataDir() + "/formats/bad/";
   struct Case {
     const char* path;
     const char* reason;  // a phrase the message must contain
@@ -54,10 +54,10 @@ TEST_CASE("malformed files are refused for the right reason", "[plugins][corpus]
 // Not run by default: `plugin_tests "[dump]"` prints what each corpus file
 // gives (counts, warnings, or the error), to review messages by eye.
 TEST_CASE("print every corpus file's outcome", "[.][dump]") {
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(prism_test::dataDir() + "/formats")) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(prism_test::testDataDir() + "/formats")) {
     if (!entry.is_regular_file() || entry.path().extension() == ".mtl") continue;
     prism_test::TimedLoad r = prism_test::loadWithin(entry.path().string(), std::chrono::seconds(10));
-    std::string name = std::filesystem::relative(entry.path(), prism_test::dataDir() + "/formats").string();
+    std::string name = std::filesystem::relative(entry.path(), prism_test::testDataDir() + "/formats").string();
     if (!r.finished) {
       WARN(name << ": TIMED OUT");
     } else if (r.mesh) {

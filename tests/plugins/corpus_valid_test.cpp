@@ -1,5 +1,5 @@
-// Every valid file of the shared corpus (shared/data/formats/{obj,ply,off})
-// loads with the vertex, face and triangle counts that shared/data/README.md
+// Every valid file of the corpus (tests/data/formats/{obj,ply,off})
+// loads with the vertex, face and triangle counts that tests/data/README.md
 // lists. Those numbers come from the curator's independent reference reader,
 // so they are copied here by hand, not computed.
 #include <catch2/catch.hpp>
@@ -12,13 +12,13 @@
 namespace {
 
 struct Expected {
-  const char* path;  // under shared/data/formats/
+  const char* path;  // under tests/data/formats/
   long vertices;
   long faces;        // -1: not stated (triangle strips)
   long triangles;
 };
 
-// From shared/data/README.md, "Expected (reference reader)" column.
+// From tests/data/README.md, "Expected (reference reader)" column.
 const Expected kExpected[] = {
     {"obj/tinyobjloader/cornell_box.obj", 76, 18, 36},
     {"obj/tinyobjloader/cornell_box_multimaterial.obj", 76, 18, 36},
@@ -126,7 +126,7 @@ const Expected kExpected[] = {
 // project, not misparse". prism rejects it, naming the reason.
 const char* const kRefusedValid = "off/geomview/hypercube.off";
 
-std::string formats() { return prism_test::dataDir() + "/formats/"; }
+std::string formats() { return prism_test::testDataDir() + "/formats/"; }
 
 }  // namespace
 

@@ -21,7 +21,7 @@ TEST_CASE("the example STL plugin reads an ASCII STL", "[plugins][example]") {
            "    endloop\n  endfacet\n"
            "endsolid two facets\n";
   }
-  prism::SharedMesh m = prism::loadMeshFile(file.string(), prism_test::buildRegistry());
+  prism::SharedMesh m = prism::loadMeshFile(file.string(), prism_test::testPluginRegistry());
   CHECK(m->plugin == "stl-example");
   CHECK(m->vertexCount() == 6);  // STL shares no vertices
   CHECK(m->triangleCount() == 2);
@@ -31,7 +31,7 @@ TEST_CASE("the example STL plugin reads an ASCII STL", "[plugins][example]") {
 
   const fs::path bad = dir / "bad.stl";
   { std::ofstream(bad) << "solid x\n facet normal 0 0 1\n outer loop\n vertex 0 0 zero\n"; }
-  CHECK_THROWS_WITH(prism::loadMeshFile(bad.string(), prism_test::buildRegistry()),
+  CHECK_THROWS_WITH(prism::loadMeshFile(bad.string(), prism_test::testPluginRegistry()),
                     Catch::Contains("bad.stl:4: expected a finite number"));
   fs::remove_all(dir);
 }

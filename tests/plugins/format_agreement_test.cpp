@@ -111,7 +111,7 @@ TEST_CASE("one mesh written as OBJ, PLY ascii/binary LE/BE and OFF loads identic
 
   for (const std::string& file : files) {
     INFO(file);
-    prism::SharedMesh mesh = prism::loadMeshFile(file, prism_test::buildRegistry());
+    prism::SharedMesh mesh = prism::loadMeshFile(file, prism_test::testPluginRegistry());
     CHECK(mesh->positions == m.xyz);
     CHECK(mesh->indices == fanned);
     CHECK(mesh->face_count == m.faces.size());

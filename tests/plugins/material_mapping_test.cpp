@@ -41,7 +41,7 @@ TEST_CASE("MTL fields map onto prism materials", "[plugins][materials]") {
     obj << "mtllib mats.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
            "f 1 2 3\nusemtl glass\nf 1 3 4\nusemtl unknown\nf 1 2 4\nusemtl mirror\nf 2 3 4\n";
   }
-  prism::SharedMesh m = prism::loadMeshFile((dir / "quad.obj").string(), prism_test::buildRegistry());
+  prism::SharedMesh m = prism::loadMeshFile((dir / "quad.obj").string(), prism_test::testPluginRegistry());
   REQUIRE(m->materials.size() == 6);
 
   const prism::Material& plain = named(*m, "plain");
@@ -75,7 +75,7 @@ TEST_CASE("MTL fields map onto prism materials", "[plugins][materials]") {
 
 TEST_CASE("the Mori knob's materials load from its MTL", "[plugins][materials]") {
   prism::SharedMesh m =
-      prism::loadMeshFile(prism_test::dataDir() + "/meshes/mori_knob/testObj.obj", prism_test::buildRegistry());
+      prism::loadMeshFile(prism_test::testDataDir() + "/meshes/mori_knob/testObj.obj", prism_test::testPluginRegistry());
   CHECK(m->triangleCount() == 11970);
   REQUIRE(m->materials.size() == 5);
   CHECK(named(*m, "InnerMat").reflect == Approx(0.3));    // illum 3, Ks .3

@@ -16,7 +16,7 @@ TEST_CASE("MeshCache shares one mesh per file and notices edits", "[plugins][cac
   const fs::path file = dir / "tri.off";
   { std::ofstream(file) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"; }
 
-  prism::MeshCache cache(prism_test::buildRegistry());
+  prism::MeshCache cache(prism_test::testPluginRegistry());
   prism::SharedMesh a = cache.load(file.string());
   prism::SharedMesh b = cache.load(file.string());
   prism::SharedMesh c = cache.load((dir / "." / "tri.off").string());  // another spelling of the same file

@@ -23,7 +23,7 @@ const prism::PluginCandidate* candidate(const prism::PluginRegistry& r, const st
 }  // namespace
 
 TEST_CASE("the built plugins are found, accepted and described", "[plugins][registry]") {
-  const prism::PluginRegistry& r = prism_test::buildRegistry();
+  const prism::PluginRegistry& r = prism_test::testPluginRegistry();
   for (const char* name : {"obj", "ply", "off", "stl-example"}) {
     INFO(name);
     const prism::LoadedPlugin* p = r.findByName(name);
@@ -41,14 +41,14 @@ TEST_CASE("the built plugins are found, accepted and described", "[plugins][regi
 }
 
 TEST_CASE("extensions choose the plugin whatever their case", "[plugins][registry]") {
-  const prism::PluginRegistry& r = prism_test::buildRegistry();
+  const prism::PluginRegistry& r = prism_test::testPluginRegistry();
   REQUIRE(r.findByExtension("PLY") != nullptr);
   CHECK(std::string(r.findByExtension("PLY")->info->name) == "ply");
   CHECK(std::string(r.findByExtension(".Obj")->info->name) == "obj");
   CHECK(r.findByExtension("xyz") == nullptr);
 
   fs::path dir = prism_test::scratchDir("prism_registry_case");
-  fs::copy_file(prism_test::dataDir() + "/formats/ply/openmesh/cube-minimal.ply", dir / "CUBE.PLY");
+  fs::copy_file(prism_test::testDataDir() + "/formats/ply/openmesh/cube-minimal.ply", dir / "CUBE.PLY");
   prism::SharedMesh mesh = prism::loadMeshFile((dir / "CUBE.PLY").string(), r);
   CHECK(mesh->triangleCount() == 12);
   CHECK(mesh->plugin == "ply");
@@ -117,7 +117,7 @@ TEST_CASE("the default search path is PRISM_PLUGIN_PATH, then plugins/ next to t
 }
 
 TEST_CASE("files the loader cannot use are refused with the file and the reason", "[plugins][registry]") {
-  const prism::PluginRegistry& r = prism_test::buildRegistry();
+  const prism::PluginRegistry& r = prism_test::testPluginRegistry();
   fs::path dir = prism_test::scratchDir("prism_registry_files");
   { std::ofstream(dir / "mesh.xyz") << "1 2 3\n"; }
   { std::ofstream(dir / "no_extension") << "hello\n"; }

@@ -1,5 +1,5 @@
 // Shared by the plugin tests: where the built plugins, the fixtures and the
-// shared data live, a registry over the build tree's plugins, and loads run
+// test data live, a registry over the build tree's plugins, and loads run
 // under a time limit so a hanging reader fails its test instead of the suite.
 #pragma once
 
@@ -15,19 +15,13 @@
 
 #include "mesh/mesh_loader.h"
 #include "mesh/plugin_registry.h"
+#include "support/test_data.h"
 
 namespace prism_test {
 
 inline std::string pluginDir() { return std::string(PRISM_BINARY_DIR) + "/plugins"; }
 inline std::string fixtureDir() { return std::string(PRISM_BINARY_DIR) + "/plugin-fixtures"; }
-inline std::string dataDir() { return std::string(PRISM_SOURCE_DIR) + "/../shared/data"; }
 
-// The plugins built into build/plugins. (The test binary links libprism
-// statically, so the default path, plugins/ next to the binary, is not it.)
-inline const prism::PluginRegistry& buildRegistry() {
-  static const prism::PluginRegistry registry({pluginDir()});
-  return registry;
-}
 
 // A fresh, empty folder for one test's files; the process id keeps tests
 // that run in parallel (ctest -j) apart.
@@ -58,7 +52,7 @@ inline TimedLoad loadWithin(const std::string& path, std::chrono::seconds limit 
     TimedLoad r;
     r.finished = true;
     try {
-      r.mesh = prism::loadMeshFile(path, buildRegistry());
+      r.mesh = prism::loadMeshFile(path, testPluginRegistry());
     } catch (const prism::MeshError& e) {
       r.error = e.what();
     } catch (const std::exception& e) {

@@ -2,7 +2,7 @@
 // (quincunx's (W+1)(H+1) + W*H, adaptive's corners on a flat image), constant
 // images resolving to themselves under every filter, edge coverage measured
 // through alpha against the exact area, bit-for-bit repeatability of every mode,
-// Z-buffer against traced primary rays on the shared meshes, the settings' route
+// Z-buffer against traced primary rays on real meshes, the settings' route
 // from the scene file and the C API, and the film's memory check.
 #include <catch2/catch.hpp>
 
@@ -19,16 +19,12 @@
 #include "scene/scene_loader.h"
 #include "support/square_coverage.h"
 #include "support/shared_context.h"
+#include "support/test_data.h"
 
 using namespace prism;
 using namespace prism::test;
 
 namespace {
-
-std::string sharedDataDir() {
-  const char* env = std::getenv("PRISM_SHARED_DATA");
-  return env && *env ? env : PRISM_SOURCE_DIR "/../shared/data";
-}
 
 RenderOptions withMode(RenderOptions o, AaMode mode, int spp = 1, FilterKind filter = FilterKind::Box) {
   o.aa = mode;
@@ -231,14 +227,10 @@ TEST_CASE("adaptive sampling gives the same image whether its film is traced in 
   CHECK(one.stats.totalRays() == several.stats.totalRays());
 }
 
-TEST_CASE("Z-buffer and traced primary rays render the shared meshes and analytic objects alike",
+TEST_CASE("Z-buffer and traced primary rays render real meshes and analytic objects alike",
           "[render][firsthit][mesh]") {
-  const std::string bunny = sharedDataDir() + "/meshes/bunny/bun_zipper_res2.ply";
-  const std::string spot = sharedDataDir() + "/meshes/spot/spot.obj";
-  if (!std::filesystem::exists(bunny) || !std::filesystem::exists(spot)) {
-    WARN("shared meshes not found under " << sharedDataDir() << " (set PRISM_SHARED_DATA); skipped");
-    return;
-  }
+  const std::string bunny = prism_test::testMeshDir() + "/bunny/bun_zipper_res2.ply";
+  const std::string spot = prism_test::testMeshDir() + "/spot/spot.obj";
   const std::string json = R"({
     "camera": {"position": [0.3, 1.4, 4.2], "look_at": [0, 0.7, 0], "fov": 38},
     "film": {"width": 128, "height": 96},

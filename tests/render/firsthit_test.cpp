@@ -9,9 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,6 +18,7 @@
 #include "render/ray_queries.h"
 #include "render/sampler.h"
 #include "support/shared_context.h"
+#include "support/test_data.h"
 
 using namespace prism;
 using namespace prism::test;
@@ -175,53 +174,6 @@ FirstHitStats passStats(const GpuScene& gpu, const std::vector<float>& xy) {
   return pass.stats();
 }
 
-// An ASCII PLY reader for the shared data's bunnies (x y z first among the vertex
-// properties, then a face list); returns an empty mesh if the file is absent.
-std::shared_ptr<TriangleMesh> readAsciiPly(const std::string& path) {
-  auto mesh = std::make_shared<TriangleMesh>();
-  std::ifstream in(path);
-  if (!in) return mesh;
-  std::string line;
-  size_t vertices = 0, faces = 0, vertex_props = 0;
-  bool in_vertex = false;
-  while (std::getline(in, line) && line.rfind("end_header", 0) != 0) {
-    std::istringstream ls(line);
-    std::string word, kind;
-    ls >> word;
-    if (word == "element") {
-      ls >> kind;
-      in_vertex = kind == "vertex";
-      (in_vertex ? vertices : faces) = 0;
-      ls >> (in_vertex ? vertices : faces);
-    } else if (word == "property" && in_vertex) {
-      ++vertex_props;
-    }
-  }
-  for (size_t v = 0; v < vertices; ++v) {
-    std::getline(in, line);
-    std::istringstream ls(line);
-    float x, y, z;
-    ls >> x >> y >> z;
-    mesh->positions.insert(mesh->positions.end(), {x, y, z});
-  }
-  for (size_t f = 0; f < faces; ++f) {
-    std::getline(in, line);
-    std::istringstream ls(line);
-    size_t n;
-    ls >> n;
-    std::vector<std::uint32_t> idx(n);
-    for (auto& i : idx) ls >> i;
-    for (size_t k = 2; k < n; ++k) mesh->indices.insert(mesh->indices.end(), {idx[0], idx[k - 1], idx[k]});
-  }
-  mesh->source = path;
-  return mesh;
-}
-
-std::string sharedDataDir() {
-  const char* env = std::getenv("PRISM_SHARED_DATA");
-  return env && *env ? env : PRISM_SOURCE_DIR "/../shared/data";
-}
-
 }  // namespace
 
 TEST_CASE("first hits agree with traced rays on triangles, transformed spheres and boxes, and a plane", "[firsthit]") {
@@ -285,13 +237,8 @@ TEST_CASE("first hits agree with traced rays when primitives cross the camera pl
   checkAgreement(scene, samplePoints(64, 48, 4, 3));
 }
 
-TEST_CASE("first hits agree with traced rays on a shared mesh", "[firsthit][mesh]") {
-  const std::string path = sharedDataDir() + "/meshes/bunny/bun_zipper_res3.ply";
-  std::shared_ptr<TriangleMesh> bunny = readAsciiPly(path);
-  if (bunny->indices.empty()) {
-    WARN("shared mesh " << path << " not found (set PRISM_SHARED_DATA); skipped");
-    return;
-  }
+TEST_CASE("first hits agree with traced rays on a real mesh", "[firsthit][mesh]") {
+  prism::SharedMesh bunny = prism_test::loadTestMesh("bunny/bun_zipper_res3.ply");
   REQUIRE(bunny->triangleCount() == 3851);
   Scene scene = emptyScene({0, 1.6, 4}, {0, 1.0, 0}, 35, 80, 60);
   Object mesh;
