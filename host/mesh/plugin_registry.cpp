@@ -52,8 +52,13 @@ std::vector<std::string> PluginRegistry::defaultSearchPath() {
       start = end + 1;
     }
   }
+  // Installed, the plugins sit in <libdir>/prism/plugins; in the build tree, in
+  // build/plugins beside build/libprism.so.
   std::string lib = folderOfThisLibrary();
-  if (!lib.empty()) dirs.push_back((fs::path(lib) / "plugins").string());
+  if (!lib.empty()) {
+    dirs.push_back((fs::path(lib) / "prism" / "plugins").string());
+    dirs.push_back((fs::path(lib) / "plugins").string());
+  }
   return dirs;
 }
 

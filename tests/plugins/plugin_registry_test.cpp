@@ -100,20 +100,26 @@ TEST_CASE("libraries that are not acceptable plugins are refused with the reason
   fs::remove_all(dir);
 }
 
-TEST_CASE("the default search path is PRISM_PLUGIN_PATH, then plugins/ next to the library", "[plugins][registry]") {
+TEST_CASE("the default search path is PRISM_PLUGIN_PATH, then prism/plugins/ and plugins/ next to the library",
+          "[plugins][registry]") {
   const char* old = std::getenv("PRISM_PLUGIN_PATH");
   std::string saved = old != nullptr ? old : "";
   setenv("PRISM_PLUGIN_PATH", "/first:/second::/third", 1);
   std::vector<std::string> dirs = prism::PluginRegistry::defaultSearchPath();
   if (old != nullptr) setenv("PRISM_PLUGIN_PATH", saved.c_str(), 1);
   else unsetenv("PRISM_PLUGIN_PATH");
-  REQUIRE(dirs.size() == 4);
+  REQUIRE(dirs.size() == 5);
   CHECK(dirs[0] == "/first");
   CHECK(dirs[1] == "/second");
   CHECK(dirs[2] == "/third");
   // This test binary holds the library code itself (linked statically).
-  CHECK(fs::path(dirs[3]).filename() == "plugins");
-  CHECK(fs::equivalent(fs::path(dirs[3]).parent_path(), fs::canonical("/proc/self/exe").parent_path()));
+  const fs::path here = fs::canonical("/proc/self/exe").parent_path();
+  const fs::path installed(dirs[3]), build_tree(dirs[4]);
+  CHECK(installed.filename() == "plugins");
+  CHECK(installed.parent_path().filename() == "prism");
+  CHECK(fs::equivalent(installed.parent_path().parent_path(), here));
+  CHECK(build_tree.filename() == "plugins");
+  CHECK(fs::equivalent(build_tree.parent_path(), here));
 }
 
 TEST_CASE("files the loader cannot use are refused with the file and the reason", "[plugins][registry]") {
