@@ -186,6 +186,83 @@ PRISM_API PrismStatus prismAddMeshArrays(PrismScene scene, const float* position
                                          const uint32_t* indices, size_t triangle_count, const char* material,
                                          const float* object_to_world, uint32_t* out_object);
 
+/* ---- building a scene in code --------------------------------------------------- */
+
+/* The calls below go through the scene loader's own checks (one implementation
+ * behind both): a value a scene file may not hold is refused with the file's
+ * message, naming the element as a file would (`objects[3].radius: expected a
+ * positive number, got -1`; indices are the element's place in the scene), and
+ * the scene is left as it was. docs/scene-format.md has every key and rule. */
+
+/* Adds a fragment of the scene format: a JSON object with any of camera, film,
+ * render, materials, lights, objects. Lights and objects are appended, materials
+ * added by name (a name may be taken once; "default" replaces the built-in
+ * material), and the camera, film and render keys given replace the scene's.
+ * Relative mesh file names are found from the current directory. Every kind the
+ * format has, now and later, can be added this way. PRISM_ERROR_PARSE for
+ * malformed JSON or a refused value. */
+PRISM_API PrismStatus prismAddSceneJson(PrismScene scene, const char* json);
+
+typedef enum PrismShadingModel { PRISM_SHADING_PHONG = 0, PRISM_SHADING_BLINN = 1 } PrismShadingModel;
+
+/* A material of the Whitted model (docs/scene-format.md, "materials"). */
+typedef struct PrismMaterial {
+  size_t struct_size; /* sizeof(PrismMaterial); set by prismDefaultMaterial */
+  uint32_t model;     /* a PrismShadingModel */
+  float ambient[3];   /* multiplies the scene's ambient light */
+  float diffuse[3];
+  float specular[3];
+  float shininess;    /* specular exponent, 0..1e6 */
+  float reflect;      /* weight of the mirror ray, 0..1 */
+  float transmit;     /* weight of the refracted ray and of shadow transmission, 0..1 */
+  float ior;          /* index of refraction of the inside, > 0 */
+  float gloss;        /* Phong-lobe exponent of reflected rays; 0: a perfect mirror */
+  float translucency; /* the same for refracted rays; 0: clear */
+  int checker;        /* nonzero: a checker texture multiplies ambient and diffuse */
+  float checker_color1[3], checker_color2[3];
+  float checker_scale; /* size of one square in surface units, > 0 */
+} PrismMaterial;
+
+/* Fills `material` with the defaults a scene file's material starts from. */
+PRISM_API void prismDefaultMaterial(PrismMaterial* material);
+/* Adds a material under `name`, for objects to name; `out_material` (may be
+ * NULL) receives its index. */
+PRISM_API PrismStatus prismAddMaterial(PrismScene scene, const char* name, const PrismMaterial* material,
+                                       uint32_t* out_material);
+
+typedef enum PrismObjectType {
+  PRISM_OBJECT_SPHERE = 0,  /* center, radius */
+  PRISM_OBJECT_BOX = 1,     /* box_min, box_max */
+  PRISM_OBJECT_PLANE = 2,   /* point, normal */
+  PRISM_OBJECT_TRIANGLE = 3 /* vertices */
+} PrismObjectType;
+
+/* An analytic object (meshes: prismAddMeshFile, prismAddMeshArrays); only the
+ * fields of its type are read. */
+typedef struct PrismObject {
+  size_t struct_size;   /* sizeof(PrismObject); set by prismDefaultObject */
+  uint32_t type;        /* a PrismObjectType */
+  const char* material; /* a material's name; NULL: the default material */
+  const float* object_to_world;     /* 4x4 row-major affine matrix, or NULL for the identity */
+  const float* object_to_world_end; /* motion blur: the matrix at shutter close, or NULL (not moving) */
+  float center[3];
+  float radius;
+  float box_min[3], box_max[3];
+  float point[3], normal[3];
+  float vertices[9]; /* three xyz points */
+} PrismObject;
+
+/* Fills `object` with struct_size, `type`, and zero everywhere else except
+ * radius 1, box_min (-1, -1, -1), box_max (1, 1, 1) and normal (0, 1, 0). */
+PRISM_API void prismDefaultObject(PrismObject* object, PrismObjectType type);
+/* Adds an object; `out_object` (may be NULL) receives its index among the
+ * scene's objects. */
+PRISM_API PrismStatus prismAddObject(PrismScene scene, const PrismObject* object, uint32_t* out_object);
+/* The colour of rays that leave the scene, and the ambient light (both: three
+ * numbers in [0, 1e6]). */
+PRISM_API PrismStatus prismSetBackground(PrismScene scene, const float color[3]);
+PRISM_API PrismStatus prismSetAmbient(PrismScene scene, const float color[3]);
+
 /* What a mesh file holds, for `prism info`: read with the plugins, not rendered. */
 typedef struct PrismMeshReportImpl* PrismMeshReport;
 typedef struct PrismMeshCounts {

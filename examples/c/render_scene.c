@@ -1,5 +1,6 @@
-/* A scene built in code and rendered: a ground quad and a pyramid from arrays,
- * a point light, a camera, then the image written with prismWriteImage.
+/* A scene built in code and rendered: a checkered floor, a glass sphere and a
+ * pyramid from arrays, two materials, a point light, a camera, then the image
+ * written with prismWriteImage.
  *
  *   render_scene OUT.png [DEVICE]
  */
@@ -16,14 +17,14 @@ static void check(PrismStatus status, const char* what) {
 }
 
 int main(int argc, char** argv) {
-  static const float ground[4 * 3] = {-4, 0, -4, 4, 0, -4, 4, 0, 4, -4, 0, 4};
-  static const uint32_t ground_triangles[2 * 3] = {0, 2, 1, 0, 3, 2};
   static const float pyramid[5 * 3] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1, 0, 1.5f, 0};
   static const uint32_t pyramid_triangles[4 * 3] = {0, 4, 1, 1, 4, 2, 2, 4, 3, 3, 4, 0};
-  const float light_position[3] = {3, 5, 4}, white[3] = {1, 1, 1};
+  const float light_position[3] = {3, 5, 4}, white[3] = {1, 1, 1}, sky[3] = {0.5f, 0.7f, 1.0f};
   PrismContext context = NULL;
   PrismScene scene = NULL;
   PrismCamera camera;
+  PrismMaterial material;
+  PrismObject object;
   PrismRenderOptions options;
   PrismRenderStats stats;
   float* rgba;
@@ -35,7 +36,27 @@ int main(int argc, char** argv) {
   }
   check(prismCreateContext(argc > 2 ? argv[2] : NULL, NULL, &context), "prismCreateContext");
   check(prismNewScene(&scene), "prismNewScene");
-  check(prismAddMeshArrays(scene, ground, 4, ground_triangles, 2, NULL, NULL, NULL), "prismAddMeshArrays");
+  check(prismSetBackground(scene, sky), "prismSetBackground");
+
+  prismDefaultMaterial(&material); /* the defaults a scene file's material starts from */
+  material.checker = 1;
+  material.checker_scale = 0.5f;
+  check(prismAddMaterial(scene, "floor", &material, NULL), "prismAddMaterial");
+  prismDefaultMaterial(&material);
+  material.diffuse[0] = material.diffuse[1] = material.diffuse[2] = 0.02f;
+  material.specular[0] = material.specular[1] = material.specular[2] = 0.9f;
+  material.shininess = 200;
+  material.reflect = 0.1f, material.transmit = 0.9f, material.ior = 1.5f;
+  check(prismAddMaterial(scene, "glass", &material, NULL), "prismAddMaterial");
+
+  prismDefaultObject(&object, PRISM_OBJECT_PLANE); /* through the origin, normal +y */
+  object.material = "floor";
+  check(prismAddObject(scene, &object, NULL), "prismAddObject");
+  prismDefaultObject(&object, PRISM_OBJECT_SPHERE);
+  object.center[0] = 1.2f, object.center[1] = 0.6f, object.center[2] = 1.2f;
+  object.radius = 0.6f;
+  object.material = "glass";
+  check(prismAddObject(scene, &object, NULL), "prismAddObject");
   check(prismAddMeshArrays(scene, pyramid, 5, pyramid_triangles, 4, NULL, NULL, NULL), "prismAddMeshArrays");
   check(prismAddPointLight(scene, light_position, white, 1.0f), "prismAddPointLight");
 
@@ -63,5 +84,5 @@ int main(int argc, char** argv) {
   free(rgba);
   prismReleaseScene(scene);
   prismReleaseContext(context);
-  return covered > 0 ? 0 : 1;
+  return covered > 0 ? 0 : 1;  /* the floor covers the lower part of the picture */
 }

@@ -9,7 +9,6 @@
 #include "mesh/mesh_cache.h"
 #include "mesh/mesh_loader.h"
 #include "mesh/plugin_registry.h"
-#include "scene/light_check.h"
 #include "scene/mesh_objects.h"
 
 using namespace prism;
@@ -56,8 +55,6 @@ PrismStatus addMesh(PrismScene scene, const SharedMesh& mesh, const char* materi
   return PRISM_OK;
 }
 
-Vec3 vec(const float* v) { return {v[0], v[1], v[2]}; }
-
 // Joined lists built once, so the C strings handed out live as long as the process.
 const std::vector<std::string>& extensionLists() {
   static const std::vector<std::string> lists = [] {
@@ -96,43 +93,6 @@ PRISM_API PrismStatus prismLoadMeshAsScene(const char* path, PrismScene* out_sce
     *out_scene = new PrismSceneImpl{sceneForMesh(mesh)};
     return PRISM_OK;
   });
-}
-
-PRISM_API PrismStatus prismAddPointLight(PrismScene scene, const float position[3], const float color[3],
-                                         float intensity) {
-  PRISM_REQUIRE(scene && position && color, "prismAddPointLight: NULL argument");
-  Light l;
-  l.position = vec(position);
-  l.color = vec(color);
-  l.intensity = intensity;
-  const std::string problem = lightProblem(l);
-  if (!problem.empty()) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismAddPointLight: " + problem);
-  scene->scene.lights.push_back(l);
-  return PRISM_OK;
-}
-
-PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* light) {
-  PRISM_REQUIRE(scene && light, "prismAddAreaLight: NULL argument");
-  PRISM_REQUIRE(light->struct_size >= sizeof(PrismAreaLight), "prismAddAreaLight: struct_size is too small");
-  PRISM_REQUIRE(light->type == PRISM_LIGHT_QUAD || light->type == PRISM_LIGHT_DISK || light->type == PRISM_LIGHT_SPHERE,
-                "prismAddAreaLight: type must be PRISM_LIGHT_QUAD, PRISM_LIGHT_DISK or PRISM_LIGHT_SPHERE");
-  Light l;
-  l.type = static_cast<LightType>(light->type);
-  l.corner = vec(light->corner);
-  l.edge1 = vec(light->edge1);
-  l.edge2 = vec(light->edge2);
-  l.center = vec(light->center);
-  l.normal = vec(light->normal);
-  l.radius = light->radius;
-  l.color = vec(light->color);
-  l.intensity = light->intensity;
-  l.samples = light->samples;
-  const std::string problem = lightProblem(l);
-  if (!problem.empty())
-    return fail(PRISM_ERROR_INVALID_ARGUMENT, std::string("prismAddAreaLight: ") + lightTypeName(l.type) + " light: " + problem);
-  if (l.type == LightType::Disk) l.normal = normalize(l.normal);
-  scene->scene.lights.push_back(l);
-  return PRISM_OK;
 }
 
 PRISM_API PrismStatus prismAddMeshFile(PrismScene scene, const char* path, const char* material,

@@ -119,7 +119,6 @@ class SceneParser {
   void parse(const ParsedJson& parsed) {
     const Json& root = parsed.root;
     m_material_order = &parsed.material_order;
-    m_material_index[m_scene.materials[0].name] = 0;  // the built-in default
     if (!root.is_object()) fail("", "expected a JSON object at top level, got " + describe(root));
     static const std::vector<std::string> kTop = {"camera",    "film",   "render",
                                                   "materials", "lights", "objects"};
@@ -127,7 +126,7 @@ class SceneParser {
       bool known = false;
       for (const std::string& k : kTop) known = known || it.key() == k;
       if (!known)
-        m_scene.warnings.push_back(m_name + ": unknown key '" + it.key() +
+        m_scene.warnings.push_back(prefix() + "unknown key '" + it.key() +
                                    "' at top level (known: " + join(kTop) + ")");
     }
     // A fixed order, whatever the file's: objects refer to materials by name.
@@ -142,8 +141,11 @@ class SceneParser {
  private:
   using Check = bool (*)(double);
 
+  // Messages start with the file's name; a fragment the C API built has none.
+  std::string prefix() const { return m_name.empty() ? "" : m_name + ": "; }
+
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw SceneError(m_name + ": " + (path.empty() ? "" : path + ": ") + what);
+    throw SceneError(prefix() + (path.empty() ? "" : path + ": ") + what);
   }
   [[noreturn]] void expected(const std::string& path, const std::string& what, const Json& got) const {
     fail(path, "expected " + what + ", got " + describe(got));
@@ -166,7 +168,7 @@ class SceneParser {
       bool ok = false;
       for (const char* k : known) ok = ok || it.key() == k;
       if (!ok)
-        m_scene.warnings.push_back(m_name + ": " + path + ": unknown key '" + it.key() + "' (ignored)");
+        m_scene.warnings.push_back(prefix() + path + ": unknown key '" + it.key() + "' (ignored)");
     }
   }
 
@@ -347,7 +349,9 @@ class SceneParser {
       if (name == "default") {
         m_scene.materials[0] = m;
       } else {
-        m_material_index[name] = static_cast<int>(m_scene.materials.size());
+        // A file's keys are unique; a scene built in parts can repeat a name.
+        if (!materialsByName().emplace(name, static_cast<int>(m_scene.materials.size())).second)
+          fail(member(path, name), "a material named '" + name + "' already exists");
         m_scene.materials.push_back(m);
       }
     }
@@ -412,7 +416,7 @@ class SceneParser {
     static const Check nonNegative = [](double x) { return x >= 0; };
     static const Check positive = [](double x) { return x > 0; };
     for (std::size_t i = 0; i < v.size(); ++i) {
-      const std::string at = element(path, i);
+      const std::string at = element(path, m_scene.lights.size());  // its index in the scene
       const Json& l = v[i];
       if (!l.is_object()) expected(at, "an object", l);
       Light light;
@@ -455,7 +459,7 @@ class SceneParser {
   void parseObjects(const Json& v, const std::string& path) {
     if (!v.is_array()) expected(path, "an array of objects", v);
     for (std::size_t i = 0; i < v.size(); ++i) {
-      Object o = parseObject(v[i], element(path, i));
+      Object o = parseObject(v[i], element(path, m_scene.objects.size()));  // its index in the scene
       if (o.type == ObjectType::Mesh) {
         Object& mesh = addMeshObject(m_scene, o.mesh, o.material_override ? o.material : -1, o.transform, o.smooth);
         mesh.moving = o.moving;
@@ -569,10 +573,22 @@ class SceneParser {
     o.transform = Transform::identity();
   }
 
-  int materialIndex(const Json& v, const std::string& path) const {
+  // Name -> index into m_scene.materials, built on first use from the scene's
+  // materials (a scene built in parts already has some).
+  std::unordered_map<std::string, int>& materialsByName() {
+    if (!m_material_index_built) {
+      for (std::size_t i = 0; i < m_scene.materials.size(); ++i)
+        m_material_index.emplace(m_scene.materials[i].name, static_cast<int>(i));
+      m_material_index_built = true;
+    }
+    return m_material_index;
+  }
+
+  int materialIndex(const Json& v, const std::string& path) {
     const std::string name = string(v, path, "a material name (a string)");
-    auto it = m_material_index.find(name);
-    if (it != m_material_index.end()) return it->second;
+    const auto& index = materialsByName();
+    auto it = index.find(name);
+    if (it != index.end()) return it->second;
     constexpr std::size_t kListed = 20;  // an error names at most this many
     std::vector<std::string> known;
     for (std::size_t i = 0; i < m_scene.materials.size() && i < kListed; ++i) known.push_back(m_scene.materials[i].name);
@@ -645,7 +661,8 @@ class SceneParser {
   std::string m_base_dir;  // mesh files are relative to the scene file's folder
   Scene& m_scene;
   const std::vector<std::string>* m_material_order = nullptr;  // the materials' keys in file order
-  std::unordered_map<std::string, int> m_material_index;       // name -> index into m_scene.materials
+  std::unordered_map<std::string, int> m_material_index;       // materialsByName(): name -> index
+  bool m_material_index_built = false;
 };
 
 // nlohmann's messages start with "[json.exception.parse_error.101] parse error at
@@ -733,17 +750,71 @@ ParsedJson parseJson(const std::string& text, const std::string& name) {
 }  // namespace
 
 Scene parseScene(const std::string& json_text, const std::string& name) {
-  const ParsedJson root = parseJson(json_text, name);
   Scene scene;
   scene.source = name;
-  scene.materials.push_back(defaultMaterial());
+  addSceneJson(scene, json_text, name, std::filesystem::path(name).parent_path().string());
+  return scene;
+}
+
+namespace {
+
+// What a failed addition must put back: the parser appends lights, objects,
+// materials and warnings, and overwrites the camera, film, render settings and
+// the default material.
+class SceneRollback {
+ public:
+  explicit SceneRollback(Scene& scene)
+      : m_scene(scene), m_camera(scene.camera), m_film(scene.film), m_render(scene.render),
+        m_default_material(scene.materials.at(0)), m_materials(scene.materials.size()),
+        m_lights(scene.lights.size()), m_objects(scene.objects.size()), m_warnings(scene.warnings.size()) {}
+  ~SceneRollback() {
+    if (m_committed) return;
+    m_scene.camera = m_camera;
+    m_scene.film = m_film;
+    m_scene.render = m_render;
+    m_scene.materials.resize(m_materials);
+    m_scene.materials[0] = m_default_material;
+    m_scene.lights.resize(m_lights);
+    m_scene.objects.resize(m_objects);
+    m_scene.warnings.resize(m_warnings);
+  }
+  void commit() { m_committed = true; }
+
+ private:
+  Scene& m_scene;
+  Camera m_camera;
+  Film m_film;
+  RenderSettings m_render;
+  Material m_default_material;
+  std::size_t m_materials, m_lights, m_objects, m_warnings;
+  bool m_committed = false;
+};
+
+void addParsed(Scene& scene, const ParsedJson& fragment, const std::string& name, const std::string& base_dir) {
+  if (scene.materials.empty()) scene.materials.push_back(defaultMaterial());
+  SceneRollback rollback(scene);
   try {
-    SceneParser(name, std::filesystem::path(name).parent_path().string(), scene).parse(root);
+    SceneParser(name, base_dir, scene).parse(fragment);
   } catch (const Json::exception& e) {
     // The parser checks types before every access; this is a last line of defence.
-    throw SceneError(name + ": unexpected value: " + jsonReason(e.what()));
+    throw SceneError((name.empty() ? "" : name + ": ") + "unexpected value: " + jsonReason(e.what()));
   }
-  return scene;
+  rollback.commit();
+}
+
+}  // namespace
+
+void addSceneJson(Scene& scene, const std::string& json_text, const std::string& name, const std::string& base_dir) {
+  addParsed(scene, parseJson(json_text, name), name, base_dir);
+}
+
+void addSceneFragment(Scene& scene, const nlohmann::json& fragment, const std::string& name,
+                      const std::string& base_dir) {
+  ParsedJson parsed;
+  parsed.root = fragment;
+  if (const auto it = fragment.find("materials"); it != fragment.end() && it->is_object())
+    for (auto m = it->begin(); m != it->end(); ++m) parsed.material_order.push_back(m.key());
+  addParsed(scene, parsed, name, base_dir);
 }
 
 Scene loadSceneFile(const std::string& path) {

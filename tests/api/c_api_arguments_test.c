@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
   PrismScene scene = NULL, none_scene = NULL;
   PrismCamera camera;
   PrismAreaLight area;
+  PrismMaterial material;
+  PrismObject object;
   PrismMeshReport report = NULL;
   PrismMeshCounts mesh_counts;
   PrismPluginCandidateInfo plugin;
@@ -58,7 +60,7 @@ int main(int argc, char** argv) {
   double seconds = 0;
   uint64_t launches = 0;
   float rgba[4 * 8 * 6], out[8 * 6 * 3];
-  const float pos[3] = {0, 5, 5}, white[3] = {1, 1, 1};
+  const float pos[3] = {0, 5, 5}, white[3] = {1, 1, 1}, negative[3] = {-1, 0, 0};
   const float tri[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   const uint32_t idx[3] = {0, 1, 2}, bad_idx[3] = {0, 1, 7};
 
@@ -112,6 +114,47 @@ int main(int argc, char** argv) {
   CHECK_OK(prismGetCamera(scene, &camera));
   camera.fov_degrees = NAN;
   BAD(prismSetCamera(scene, &camera), "prismSetCamera");
+
+  /* Building a scene in code. */
+  prismDefaultMaterial(NULL); /* no-ops, not crashes */
+  prismDefaultObject(NULL, PRISM_OBJECT_SPHERE);
+  prismDefaultMaterial(&material);
+  prismDefaultObject(&object, PRISM_OBJECT_SPHERE);
+  BAD(prismAddSceneJson(NULL, "{}"), "prismAddSceneJson");
+  BAD(prismAddSceneJson(scene, NULL), "prismAddSceneJson");
+  EXPECT(prismAddSceneJson(scene, "{\"objects\": [1"), PRISM_ERROR_PARSE, "prismAddSceneJson");
+  BAD(prismAddMaterial(NULL, "m", &material, NULL), "prismAddMaterial");
+  BAD(prismAddMaterial(scene, NULL, &material, NULL), "prismAddMaterial");
+  BAD(prismAddMaterial(scene, "m", NULL, NULL), "prismAddMaterial");
+  BAD(prismAddMaterial(scene, "", &material, NULL), "prismAddMaterial");
+  material.struct_size = 8;
+  BAD(prismAddMaterial(scene, "m", &material, NULL), "prismAddMaterial");
+  prismDefaultMaterial(&material);
+  material.model = 7;
+  BAD(prismAddMaterial(scene, "m", &material, NULL), "prismAddMaterial");
+  prismDefaultMaterial(&material);
+  material.ior = NAN;
+  BAD(prismAddMaterial(scene, "m", &material, NULL), "prismAddMaterial");
+  BAD(prismAddObject(NULL, &object, NULL), "prismAddObject");
+  BAD(prismAddObject(scene, NULL, NULL), "prismAddObject");
+  object.struct_size = 8;
+  BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
+  prismDefaultObject(&object, (PrismObjectType)9);
+  BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
+  prismDefaultObject(&object, PRISM_OBJECT_SPHERE);
+  object.radius = INFINITY;
+  BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
+  prismDefaultObject(&object, PRISM_OBJECT_TRIANGLE); /* all three vertices at the origin */
+  BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
+  prismDefaultObject(&object, PRISM_OBJECT_SPHERE);
+  object.material = "no-such-material";
+  BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
+  BAD(prismSetBackground(NULL, white), "prismSetBackground");
+  BAD(prismSetBackground(scene, NULL), "prismSetBackground");
+  BAD(prismSetAmbient(NULL, white), "prismSetAmbient");
+  BAD(prismSetAmbient(scene, NULL), "prismSetAmbient");
+  BAD(prismSetAmbient(scene, negative), "prismSetAmbient");
+  BAD(prismSetBackground(scene, negative), "prismSetBackground");
 
   /* Lights and meshes. */
   BAD(prismAddPointLight(NULL, pos, white, 1.0f), "prismAddPointLight");

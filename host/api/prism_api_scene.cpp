@@ -1,0 +1,214 @@
+// C API: building a scene in code. Every call turns its arguments into a
+// fragment of the scene format and hands it to the scene loader
+// (addSceneFragment), so a call is checked by the same code, and refused with
+// the same message, as the same value in a file.
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "api/api_boundary.h"
+#include "api/api_handles.h"
+#include "scene/scene_loader.h"
+
+using namespace prism;
+using Json = nlohmann::json;
+
+namespace {
+
+#define PRISM_REQUIRE(cond, message) \
+  if (!(cond)) return fail(PRISM_ERROR_INVALID_ARGUMENT, message)
+
+Json triple(const float* v) { return Json::array({v[0], v[1], v[2]}); }
+
+Json matrix(const float* m) {
+  Json a = Json::array();
+  for (int i = 0; i < 16; ++i) a.push_back(m[i]);
+  return Json{{"matrix", a}};
+}
+
+// A typed call's fragment, checked by the loader; a refused value is the
+// caller's argument, not a malformed document.
+void addChecked(PrismScene scene, const Json& fragment) {
+  try {
+    addSceneFragment(scene->scene, fragment, "", "");
+  } catch (const SceneIoError&) {
+    throw;
+  } catch (const SceneError& e) {
+    throw std::invalid_argument(e.what());
+  }
+}
+
+Json materialJson(const PrismMaterial& m) {
+  Json j{{"model", m.model == PRISM_SHADING_BLINN ? "blinn" : m.model == PRISM_SHADING_PHONG ? "phong" : "?"},
+         {"ambient", triple(m.ambient)},
+         {"diffuse", triple(m.diffuse)},
+         {"specular", triple(m.specular)},
+         {"shininess", m.shininess},
+         {"reflect", m.reflect},
+         {"transmit", m.transmit},
+         {"ior", m.ior},
+         {"gloss", m.gloss},
+         {"translucency", m.translucency}};
+  if (m.checker)
+    j["texture"] = Json{{"type", "checker"},
+                        {"color1", triple(m.checker_color1)},
+                        {"color2", triple(m.checker_color2)},
+                        {"scale", m.checker_scale}};
+  return j;
+}
+
+Json objectJson(const PrismObject& o) {
+  Json j;
+  switch (o.type) {
+    case PRISM_OBJECT_SPHERE:
+      j = Json{{"type", "sphere"}, {"center", triple(o.center)}, {"radius", o.radius}};
+      break;
+    case PRISM_OBJECT_BOX:
+      j = Json{{"type", "box"}, {"min", triple(o.box_min)}, {"max", triple(o.box_max)}};
+      break;
+    case PRISM_OBJECT_PLANE:
+      j = Json{{"type", "plane"}, {"point", triple(o.point)}, {"normal", triple(o.normal)}};
+      break;
+    case PRISM_OBJECT_TRIANGLE:
+      j = Json{{"type", "triangle"},
+               {"vertices", Json::array({triple(o.vertices), triple(o.vertices + 3), triple(o.vertices + 6)})}};
+      break;
+  }
+  if (o.material) j["material"] = o.material;
+  if (o.object_to_world) j["transform"] = matrix(o.object_to_world);
+  if (o.object_to_world_end) j["transform_end"] = matrix(o.object_to_world_end);
+  return j;
+}
+
+}  // namespace
+
+extern "C" {
+
+PRISM_API PrismStatus prismAddSceneJson(PrismScene scene, const char* json) {
+  PRISM_REQUIRE(scene && json, "prismAddSceneJson: NULL argument");
+  return guarded(__func__, [&] {
+    addSceneJson(scene->scene, json, "json", "");
+    ++scene->revision;
+    return PRISM_OK;
+  });
+}
+
+PRISM_API void prismDefaultMaterial(PrismMaterial* material) {
+  if (!material) return;
+  const Material d = defaultMaterial();
+  *material = PrismMaterial{};
+  material->struct_size = sizeof(PrismMaterial);
+  material->model = d.model == ShadingModel::Blinn ? PRISM_SHADING_BLINN : PRISM_SHADING_PHONG;
+  auto put = [](float* out, const Vec3& v) {
+    out[0] = static_cast<float>(v.x), out[1] = static_cast<float>(v.y), out[2] = static_cast<float>(v.z);
+  };
+  put(material->ambient, d.ambient);
+  put(material->diffuse, d.diffuse);
+  put(material->specular, d.specular);
+  material->shininess = static_cast<float>(d.shininess);
+  material->reflect = static_cast<float>(d.reflect);
+  material->transmit = static_cast<float>(d.transmit);
+  material->ior = static_cast<float>(d.ior);
+  material->gloss = static_cast<float>(d.gloss);
+  material->translucency = static_cast<float>(d.translucency);
+  const Texture t;
+  put(material->checker_color1, t.color1);
+  put(material->checker_color2, t.color2);
+  material->checker_scale = static_cast<float>(t.scale);
+}
+
+PRISM_API PrismStatus prismAddMaterial(PrismScene scene, const char* name, const PrismMaterial* material,
+                                       uint32_t* out_material) {
+  PRISM_REQUIRE(scene && name && material, "prismAddMaterial: NULL argument");
+  PRISM_REQUIRE(material->struct_size >= sizeof(PrismMaterial), "prismAddMaterial: struct_size is too small");
+  PRISM_REQUIRE(material->model == PRISM_SHADING_PHONG || material->model == PRISM_SHADING_BLINN,
+                "prismAddMaterial: model must be PRISM_SHADING_PHONG or PRISM_SHADING_BLINN");
+  return guarded(__func__, [&] {
+    addChecked(scene, Json{{"materials", Json{{name, materialJson(*material)}}}});
+    if (out_material) {
+      const std::vector<Material>& all = scene->scene.materials;
+      *out_material = std::string(name) == all[0].name ? 0u : static_cast<uint32_t>(all.size() - 1);
+    }
+    return PRISM_OK;
+  });
+}
+
+PRISM_API void prismDefaultObject(PrismObject* object, PrismObjectType type) {
+  if (!object) return;
+  *object = PrismObject{};
+  object->struct_size = sizeof(PrismObject);
+  object->type = type;
+  object->radius = 1;
+  for (int k = 0; k < 3; ++k) object->box_min[k] = -1, object->box_max[k] = 1;
+  object->normal[1] = 1;
+}
+
+PRISM_API PrismStatus prismAddObject(PrismScene scene, const PrismObject* object, uint32_t* out_object) {
+  PRISM_REQUIRE(scene && object, "prismAddObject: NULL argument");
+  PRISM_REQUIRE(object->struct_size >= sizeof(PrismObject), "prismAddObject: struct_size is too small");
+  PRISM_REQUIRE(object->type <= PRISM_OBJECT_TRIANGLE,
+                "prismAddObject: type must be PRISM_OBJECT_SPHERE, PRISM_OBJECT_BOX, PRISM_OBJECT_PLANE or "
+                "PRISM_OBJECT_TRIANGLE");
+  return guarded(__func__, [&] {
+    addChecked(scene, Json{{"objects", Json::array({objectJson(*object)})}});
+    ++scene->revision;
+    if (out_object) *out_object = static_cast<uint32_t>(scene->scene.objects.size() - 1);
+    return PRISM_OK;
+  });
+}
+
+PRISM_API PrismStatus prismAddPointLight(PrismScene scene, const float position[3], const float color[3],
+                                         float intensity) {
+  PRISM_REQUIRE(scene && position && color, "prismAddPointLight: NULL argument");
+  return guarded(__func__, [&] {
+    addChecked(scene, Json{{"lights", Json::array({Json{{"type", "point"},
+                                                         {"position", triple(position)},
+                                                         {"color", triple(color)},
+                                                         {"intensity", intensity}}})}});
+    return PRISM_OK;
+  });
+}
+
+PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* light) {
+  PRISM_REQUIRE(scene && light, "prismAddAreaLight: NULL argument");
+  PRISM_REQUIRE(light->struct_size >= sizeof(PrismAreaLight), "prismAddAreaLight: struct_size is too small");
+  Json j{{"color", triple(light->color)}, {"intensity", light->intensity}, {"samples", light->samples}};
+  switch (light->type) {
+    case PRISM_LIGHT_QUAD:
+      j.update(Json{{"type", "quad"}, {"corner", triple(light->corner)}, {"edge1", triple(light->edge1)},
+                    {"edge2", triple(light->edge2)}});
+      break;
+    case PRISM_LIGHT_DISK:
+      j.update(Json{{"type", "disk"}, {"center", triple(light->center)}, {"normal", triple(light->normal)},
+                    {"radius", light->radius}});
+      break;
+    case PRISM_LIGHT_SPHERE:
+      j.update(Json{{"type", "sphere"}, {"center", triple(light->center)}, {"radius", light->radius}});
+      break;
+    default:
+      return fail(PRISM_ERROR_INVALID_ARGUMENT,
+                  "prismAddAreaLight: type must be PRISM_LIGHT_QUAD, PRISM_LIGHT_DISK or PRISM_LIGHT_SPHERE");
+  }
+  return guarded(__func__, [&] {
+    addChecked(scene, Json{{"lights", Json::array({j})}});
+    return PRISM_OK;
+  });
+}
+
+PRISM_API PrismStatus prismSetBackground(PrismScene scene, const float color[3]) {
+  PRISM_REQUIRE(scene && color, "prismSetBackground: NULL argument");
+  return guarded(__func__, [&] {
+    addChecked(scene, Json{{"render", Json{{"background", triple(color)}}}});
+    return PRISM_OK;
+  });
+}
+
+PRISM_API PrismStatus prismSetAmbient(PrismScene scene, const float color[3]) {
+  PRISM_REQUIRE(scene && color, "prismSetAmbient: NULL argument");
+  return guarded(__func__, [&] {
+    addChecked(scene, Json{{"render", Json{{"ambient", triple(color)}}}});
+    return PRISM_OK;
+  });
+}
+
+}  // extern "C"
