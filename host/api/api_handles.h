@@ -21,12 +21,18 @@ struct PrismContextImpl {
   // The ray-query engine of the last prismIntersect / prismOccluded, reused while
   // the scene (and its revision) and the structure stay the same.
   std::unique_ptr<prism::RayQueryEngine> queries;
-  const PrismSceneImpl* queries_scene = nullptr;
-  unsigned long long queries_revision = 0;
+  unsigned long long queries_revision = 0;  // the scene revision `queries` was built for
   prism::AccelKind queries_accel = prism::AccelKind::None;
 };
 
+// A process-wide stamp: a scene takes a fresh one when it is made and at every
+// change to its geometry, so no two scene states share one, not even those of a
+// scene that reuses a released scene's address. A context's cached ray-query
+// structure is valid while the scene's revision is the one it was built for.
+unsigned long long nextSceneRevision();
+
 struct PrismSceneImpl {
   prism::Scene scene;
-  unsigned long long revision = 0;  // bumped by every change to the scene's geometry
+  unsigned long long revision = nextSceneRevision();
+  void changed() { revision = nextSceneRevision(); }
 };

@@ -1,5 +1,6 @@
 // The C API (include/prism.h). Each function checks its arguments, then runs
 // its body inside guarded() (api_boundary.h).
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -96,6 +97,11 @@ PrismStatus loadInto(Scene scene, PrismScene* out) {
 }
 
 }  // namespace
+
+unsigned long long nextSceneRevision() {
+  static std::atomic<unsigned long long> next{1};
+  return next.fetch_add(1, std::memory_order_relaxed);
+}
 
 extern "C" {
 

@@ -50,7 +50,7 @@ PrismStatus addMesh(PrismScene scene, const SharedMesh& mesh, const char* materi
   Transform t = transformFrom(matrix);
   int m = materialIndex(scene->scene, material);
   addMeshObject(scene->scene, mesh, m, t, smooth != 0);
-  ++scene->revision;
+  scene->changed();
   if (out_object) *out_object = static_cast<uint32_t>(scene->scene.objects.size() - 1);
   return PRISM_OK;
 }

@@ -16,13 +16,11 @@ RayQueryEngine& engineFor(PrismContext context, PrismScene scene, PrismAccel acc
   const char* name = prismAccelName(accel);
   if (!name) throw std::invalid_argument("unknown accel value " + std::to_string(accel));
   AccelKind kind = parseAccelKind(name);
-  if (!context->queries || context->queries_scene != scene || context->queries_revision != scene->revision ||
-      context->queries_accel != kind) {
+  if (!context->queries || context->queries_revision != scene->revision || context->queries_accel != kind) {
     context->queries.reset();
     GpuScene gpu = flattenScene(scene->scene, RenderOptions::fromScene(scene->scene));
     context->queries = std::make_unique<RayQueryEngine>(*context->context, std::move(gpu.objects), kind,
                                                         std::move(gpu.materials));
-    context->queries_scene = scene;
     context->queries_revision = scene->revision;
     context->queries_accel = kind;
   }

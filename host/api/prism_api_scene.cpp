@@ -88,7 +88,7 @@ PRISM_API PrismStatus prismAddSceneJson(PrismScene scene, const char* json) {
   PRISM_REQUIRE(scene && json, "prismAddSceneJson: NULL argument");
   return guarded(__func__, [&] {
     addSceneJson(scene->scene, json, "json", "");
-    ++scene->revision;
+    scene->changed();
     return PRISM_OK;
   });
 }
@@ -151,7 +151,7 @@ PRISM_API PrismStatus prismAddObject(PrismScene scene, const PrismObject* object
                 "PRISM_OBJECT_TRIANGLE");
   return guarded(__func__, [&] {
     addChecked(scene, Json{{"objects", Json::array({objectJson(*object)})}});
-    ++scene->revision;
+    scene->changed();
     if (out_object) *out_object = static_cast<uint32_t>(scene->scene.objects.size() - 1);
     return PRISM_OK;
   });

@@ -298,6 +298,21 @@ int main(int argc, char** argv) {
   CHECK_OK(prismAddObject(typed, &o, &index));
   CHECK(index == 7);
 
+  /* A context's cached query structure never outlives its scene: scenes made
+   * after a release (often at the released one's address) get their own. */
+  for (i = 0; i < 6; ++i) {
+    PrismScene s = NULL;
+    PrismRay ray = {{0, 0, 5}, 0, {0, 0, -1}, INFINITY};
+    PrismHit hit;
+    CHECK_OK(prismNewScene(&s));
+    prismDefaultObject(&o, PRISM_OBJECT_SPHERE);
+    o.radius = 0.5f + 0.5f * (float)i;
+    CHECK_OK(prismAddObject(s, &o, NULL));
+    CHECK_OK(prismIntersect(ctx, s, PRISM_ACCEL_BVH, &ray, &hit, 1, NULL));
+    CHECK(hit.prim == 0 && fabsf(hit.t - (5.0f - o.radius)) < 1e-5f);
+    prismReleaseScene(s);
+  }
+
   free(a), free(b), free(da), free(db);
   prismReleaseScene(typed);
   prismReleaseScene(file);
