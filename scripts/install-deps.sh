@@ -14,6 +14,7 @@ packages=(
   povray                   # benchmarks only: prism-bench povray
   clang libclang-rt-14-dev # fuzz targets (libFuzzer with ASan/UBSan)
   bc
+  python3 python3-venv     # the Python package and its tests (scripts/test-python.sh)
 )
 
 missing=()

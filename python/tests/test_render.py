@@ -1,0 +1,139 @@
+"""Rendering from Python: the one-liner's contract, scenes built in code
+against the same scenes as text, AOVs against the camera's closed form,
+progress and cancellation, errors carrying prism's messages."""
+import math
+import os
+
+import numpy as np
+import pytest
+
+import prism
+
+
+def test_one_liner_returns_linear_rgba_of_the_asked_size(scenes_dir):
+    image = prism.render(os.path.join(scenes_dir, "whitted.json"), width=64, height=48, device="cpu")
+    assert image.shape == (48, 64, 4) and image.dtype == np.float32
+    assert np.isfinite(image).all()
+    alpha = image[..., 3]
+    assert set(np.unique(alpha)) <= {0.0, 1.0}  # coverage of one sample per pixel
+    assert 0 < alpha.mean() < 1  # the plane below, the sky above
+
+
+def whitted_dict():
+    return {
+        "camera": {"position": [0, 2.0, 6.5], "look_at": [0, 0.8, 0], "fov": 40},
+        "render": {"ambient": [0.15, 0.15, 0.15], "background": [0.5, 0.5, 0.75]},
+        "materials": {
+            "checker": {"diffuse": [0.9, 0.9, 0.9], "shininess": 16,
+                        "texture": {"type": "checker", "color1": [1, 0, 0], "color2": [1, 1, 0], "scale": 1}},
+            "glass": {"model": "blinn", "ambient": 0, "diffuse": 0.0625, "specular": 0.875, "shininess": 300,
+                      "reflect": 0.125, "transmit": 0.875, "ior": 1.5},
+        },
+        "lights": [{"position": [-4, 7, 6], "intensity": 0.75}],
+        "objects": [
+            {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "checker"},
+            {"type": "sphere", "center": [-0.75, 1, 0.75], "radius": 1, "material": "glass"},
+            {"type": "box", "min": [1, 0, -1], "max": [2, 1, 0]},
+            {"type": "triangle", "vertices": [[-3, 0, -2], [-1, 0, -2], [-2, 2, -2]], "material": "glass"},
+        ],
+    }
+
+
+def test_a_scene_built_in_code_renders_as_the_same_scene_as_json(ctx):
+    # Every number is a float exactly, so both routes hold the same values.
+    built = prism.Scene()
+    built.camera = {"position": (0, 2.0, 6.5), "look_at": (0, 0.8, 0), "fov": 40}
+    built.set_ambient(0.15).set_background((0.5, 0.5, 0.75))
+    built.add_material("checker", diffuse=0.9, shininess=16, checker=((1, 0, 0), (1, 1, 0), 1))
+    built.add_material("glass", model="blinn", ambient=0, diffuse=0.0625, specular=0.875, shininess=300,
+                       reflect=0.125, transmit=0.875, ior=1.5)
+    built.add_point_light((-4, 7, 6), intensity=0.75)
+    assert built.add_plane((0, 0, 0), (0, 1, 0), material="checker") == 0
+    assert built.add_sphere((-0.75, 1, 0.75), 1, material="glass") == 1
+    assert built.add_box((1, 0, -1), (2, 1, 0)) == 2
+    assert built.add_triangle([[-3, 0, -2], [-1, 0, -2], [-2, 2, -2]], material="glass") == 3
+    written = prism.Scene.from_json(whitted_dict())
+    a = ctx.render(built, width=72, height=40, max_depth=6, aovs=("depth", "primid"))
+    b = ctx.render(written, width=72, height=40, max_depth=6, aovs=("depth", "primid"))
+    assert a.rgba.tobytes() == b.rgba.tobytes()
+    assert a.aovs["depth"].tobytes() == b.aovs["depth"].tobytes()
+    assert (a.aovs["primid"] == b.aovs["primid"]).all()
+    assert set(np.unique(a.aovs["primid"])) == {-1, 0, 1, 2, 3}  # every object is seen, and the sky
+
+
+def test_depth_and_primid_match_the_cameras_closed_form(ctx):
+    # A sphere of radius 1 at the origin seen from z = 4: the primary ray through
+    # pixel (i, j)'s centre is known, and so is where it meets the sphere.
+    width, height, fov = 40, 30, 50.0
+    scene = prism.Scene()
+    scene.camera = {"position": (0, 0, 4), "look_at": (0, 0, 0), "fov": fov}
+    scene.add_sphere((0, 0, 0), 1)
+    r = ctx.render(scene, width=width, height=height, aovs=("depth", "primid", "normal"))
+    depth, primid, normal = r.aovs["depth"], r.aovs["primid"], r.aovs["normal"]
+    assert depth.shape == (height, width) and normal.shape == (height, width, 3) and primid.dtype == np.int32
+    tan_half = math.tan(math.radians(fov) / 2)
+    compared = 0
+    for j in range(height):
+        for i in range(width):
+            x = (2 * (i + 0.5) / width - 1) * tan_half * width / height
+            y = (1 - 2 * (j + 0.5) / height) * tan_half
+            d = np.array([x, y, -1.0]) / math.sqrt(x * x + y * y + 1)
+            o = np.array([0, 0, 4.0])
+            b = o @ d
+            disc = b * b - (o @ o - 1)
+            if abs(disc) < 1e-3:  # grazing: either answer is right in float
+                continue
+            compared += 1
+            if disc < 0:
+                assert primid[j, i] == -1 and math.isinf(depth[j, i])
+            else:
+                t = -b - math.sqrt(disc)
+                assert primid[j, i] == 0
+                assert depth[j, i] == pytest.approx(t, rel=1e-5)
+                assert normal[j, i] == pytest.approx((o + t * d), abs=1e-4)  # the unit sphere's normal is the point
+    assert compared > 0.95 * width * height
+
+
+def test_progress_is_reported_and_can_cancel(ctx, scenes_dir):
+    scene = prism.Scene.load(os.path.join(scenes_dir, "whitted.json"))
+    seen = []
+    ctx.render(scene, width=32, height=24, progress=lambda f: seen.append(f))
+    assert seen and all(0 <= f <= 1 for f in seen) and seen == sorted(seen)
+    with pytest.raises(prism.Cancelled, match="cancel"):
+        ctx.render(scene, width=32, height=24, progress=lambda f: True)
+
+    def broken(f):
+        raise KeyError("from the callback")
+
+    with pytest.raises(KeyError, match="from the callback"):
+        ctx.render(scene, width=32, height=24, progress=broken)
+    ctx.render(scene, width=8, height=6)  # the context still renders afterwards
+
+
+def test_errors_are_exceptions_with_prisms_messages(ctx, tmp_path):
+    bad = {"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]}
+    with pytest.raises(prism.ParseError) as from_json:
+        prism.Scene.from_json(bad, name="bad")
+    assert "bad: objects[0].radius: expected a positive number, got -1" in str(from_json.value)
+    with pytest.raises(prism.InvalidArgumentError) as from_call:
+        prism.Scene().add_sphere((0, 0, 0), -1)
+    assert str(from_call.value).endswith(str(from_json.value).split("bad: ", 1)[1])  # the same words
+    with pytest.raises(prism.FileError, match="no-such-file.json"):
+        prism.Scene.load(str(tmp_path / "no-such-file.json"))
+    with pytest.raises(prism.InvalidArgumentError, match="width"):
+        ctx.render(prism.Scene(), width=0, height=10)
+    with pytest.raises(prism.InvalidArgumentError, match="unknown"):
+        ctx.render(prism.Scene(), width=8, height=8, accel="kd-tree")
+    with pytest.raises(prism.DeviceError):
+        prism.Context("no-such-device")
+    assert isinstance(from_call.value, ValueError) and isinstance(from_call.value, prism.Error)
+
+
+def test_devices_and_images(ctx, tmp_path):
+    listed = prism.devices()
+    assert listed and ctx.device["name"] in [d["name"] for d in listed]
+    assert ctx.device["type"] == "cpu"
+    image = np.zeros((6, 8, 4), dtype=np.float32)
+    image[..., 0] = np.linspace(0, 1, 8)
+    prism.write_image(str(tmp_path / "ramp.pfm"), image)
+    assert (tmp_path / "ramp.pfm").stat().st_size > 6 * 8 * 3 * 4
