@@ -2,13 +2,28 @@
  *
  * Every call returns a PrismStatus (or nothing) and never aborts or throws. After a
  * failed call, prismGetLastError() returns a message for the calling thread that names
- * the file, key or argument at fault and the reason. Handles are opaque; each New/Create
- * call has a matching Release.
+ * the file, key or argument at fault and the reason.
+ *
+ * Ownership: handles (PrismContext, PrismScene, PrismResult, PrismMeshReport) are
+ * opaque; each is made by one call, belongs to the caller, and is released once by its
+ * Release call (NULL is a no-op). There is no reference counting, and none is needed:
+ * no handle keeps another alive or points at it, so they may be released in any order
+ * (a result outlives its context and scene; a scene may be released while contexts
+ * that rendered it live). Strings returned as const char* belong to the library; each
+ * function says how long they stay valid. Buffers passed in are the caller's and are
+ * copied or written before the call returns.
+ *
+ * Threads: calls on one context must not overlap (use a context from one thread at a
+ * time); different contexts may be used from different threads at once, also on one
+ * shared scene, as long as no thread changes that scene meanwhile. A scene is changed
+ * only by the calls that take it to add or set something. Calls without a context or
+ * scene (devices, names, scene loading, prismWriteImage) may be made from any thread.
+ * docs/c-api.md, "Threads and ownership", and tests/api/c_api_threads_test.c.
  *
  * Typical use:
- *   PrismContext ctx;  prismCreateContext(NULL, &ctx);
- *   PrismScene scene;  prismLoadScene(ctx, "scene.json", &scene);
- *   PrismRenderOptions opts; prismGetRenderOptions(scene, &opts);
+ *   PrismContext ctx;  prismCreateContext(NULL, NULL, &ctx);
+ *   PrismScene scene;  prismLoadScene("scene.json", &scene);
+ *   PrismRenderOptions opts;  opts.struct_size = sizeof opts;  prismGetRenderOptions(scene, &opts);
  *   float* rgba = malloc(4 * sizeof(float) * opts.width * opts.height);
  *   prismRender(ctx, scene, &opts, rgba, NULL);
  *   prismWriteImage("out.png", rgba, opts.width, opts.height, 4);
@@ -432,6 +447,21 @@ PRISM_API PrismStatus prismParseAov(const char* name, PrismAov* aov);
  * centre (none, quincunx), the first sample (grid, jitter, poisson, random), or the
  * top-left corner (adaptive). */
 PRISM_API PrismStatus prismGetAov(PrismContext context, PrismAov aov, float* out, size_t count);
+
+/* One render's image, AOVs and statistics, owned by the result: it holds its
+ * own copies, so it outlives the context and the scene that made it. */
+typedef struct PrismResultImpl* PrismResult;
+/* Renders like prismRender, into a new result (release it with
+ * prismReleaseResult). Does not change what prismGetAov reads. */
+PRISM_API PrismStatus prismRenderToResult(PrismContext context, PrismScene scene, const PrismRenderOptions* options,
+                                          PrismResult* out_result);
+PRISM_API PrismStatus prismGetResultSize(PrismResult result, uint32_t* width, uint32_t* height);
+/* Pointers into the result (width*height*4 RGBA floats, or width*height*channels
+ * for an AOV, rows top to bottom), valid until prismReleaseResult. */
+PRISM_API PrismStatus prismGetResultImage(PrismResult result, const float** rgba);
+PRISM_API PrismStatus prismGetResultAov(PrismResult result, PrismAov aov, const float** data, uint32_t* channels);
+PRISM_API PrismStatus prismGetResultStats(PrismResult result, PrismRenderStats* stats);
+PRISM_API void prismReleaseResult(PrismResult result); /* NULL is a no-op */
 
 /* ---- ray queries ------------------------------------------------------------------ */
 

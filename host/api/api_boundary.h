@@ -20,7 +20,8 @@ std::string namedAfter(const char* function, const std::string& message);
 // Runs `body` (returning PrismStatus) and maps exceptions, each message named
 // after `function` (the C function called: pass __func__):
 //   SceneIoError → IO, SceneError → PARSE, KernelBuildError → KERNEL_BUILD,
-//   DeviceError → DEVICE, MeshError → PARSE, ImageError → IO, std::invalid_argument → INVALID_ARGUMENT,
+//   DeviceError → DEVICE, MeshError → PARSE, ImageError → IO, FilmTooLarge → OUT_OF_MEMORY,
+//   RenderCancelled → INVALID_OPERATION, std::invalid_argument → INVALID_ARGUMENT,
 //   std::bad_alloc → OUT_OF_MEMORY, anything else → UNKNOWN.
 template <typename Body>
 PrismStatus guarded(const char* function, Body&& body);

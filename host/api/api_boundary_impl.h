@@ -31,6 +31,8 @@ PrismStatus guarded(const char* function, Body&& body) {
     return fail(PRISM_ERROR_PARSE, e.what());
   } catch (const ImageError& e) {
     return fail(PRISM_ERROR_IO, e.what());
+  } catch (const FilmTooLarge& e) {
+    return fail(PRISM_ERROR_OUT_OF_MEMORY, e.what());
   } catch (const RenderCancelled& e) {
     return fail(PRISM_ERROR_INVALID_OPERATION, e.what());
   } catch (const std::invalid_argument& e) {

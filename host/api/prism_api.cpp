@@ -7,6 +7,7 @@
 
 #include "api/api_boundary.h"
 #include "api/api_handles.h"
+#include "api/api_render.h"
 #include "device/device_list.h"
 #include "render/image_writer.h"
 #include "scene/scene_loader.h"
@@ -97,6 +98,37 @@ PrismStatus loadInto(Scene scene, PrismScene* out) {
 }
 
 }  // namespace
+
+RenderResult renderScene(PrismContext context, PrismScene scene, const PrismRenderOptions* options) {
+  RenderOptions opts = options ? fromC(*options) : RenderOptions::fromScene(scene->scene);
+  opts.validate();
+  if (!context->renderer) context->renderer = std::make_unique<Renderer>(*context->context);
+  ProgressFn progress;
+  if (context->progress) progress = [context](double f) { return context->progress(context->progress_user, f) == 0; };
+  return context->renderer->render(scene->scene, opts, progress);  // FilmTooLarge: guarded() says OUT_OF_MEMORY
+}
+
+void fillStats(const RenderStats& from, double kernel_build_seconds, PrismRenderStats* stats) {
+  size_t size = stats->struct_size;
+  std::memset(stats, 0, size);
+  stats->struct_size = size;
+  stats->seconds = from.seconds;
+  stats->kernel_build_seconds = kernel_build_seconds;
+  stats->primary_rays = from.rays_by_kind[0];
+  stats->reflected_rays = from.rays_by_kind[1];
+  stats->refracted_rays = from.rays_by_kind[2];
+  stats->shadow_rays = from.rays_by_kind[3];
+  stats->waves = static_cast<uint32_t>(from.waves);
+  for (int d = 0; d < 32; ++d) stats->rays_per_depth[d] = from.rays_per_depth[d];
+  PrismAccel accel = PRISM_ACCEL_BVH;
+  prismParseAccel(accelName(from.accel), &accel);
+  stats->accel = accel;
+  stats->accel_build_seconds = from.accel_stats.build_seconds;
+  stats->rays_per_pixel = from.rays_per_pixel;
+  stats->first_hit_used = toC(from.first_hit);
+  stats->setup_seconds = from.setup_seconds;
+  stats->trace_seconds = from.seconds - from.setup_seconds;
+}
 
 unsigned long long nextSceneRevision() {
   static std::atomic<unsigned long long> next{1};
@@ -252,42 +284,12 @@ PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const 
   PRISM_REQUIRE(!stats || stats->struct_size >= sizeof(PrismRenderStats),
                 "prismRender: stats->struct_size must be set to sizeof(PrismRenderStats)");
   return guarded(__func__, [&] {
-    RenderOptions opts = options ? fromC(*options) : RenderOptions::fromScene(scene->scene);
-    opts.validate();
-    if (!context->renderer) context->renderer = std::make_unique<Renderer>(*context->context);
-    ProgressFn progress;
-    if (context->progress)
-      progress = [context](double f) { return context->progress(context->progress_user, f) == 0; };
     context->has_render = false;
-    try {
-      context->last = context->renderer->render(scene->scene, opts, progress);
-    } catch (const FilmTooLarge& e) {
-      return fail(PRISM_ERROR_OUT_OF_MEMORY, e.what());
-    }
+    context->last = renderScene(context, scene, options);
     context->has_render = true;
     const RenderResult& r = context->last;
     std::memcpy(rgba, r.rgba.data(), r.rgba.size() * sizeof(float));
-    if (stats) {
-      size_t size = stats->struct_size;
-      std::memset(stats, 0, size);
-      stats->struct_size = size;
-      stats->seconds = r.stats.seconds;
-      stats->kernel_build_seconds = context->context->takeBuildSeconds();
-      stats->primary_rays = r.stats.rays_by_kind[0];
-      stats->reflected_rays = r.stats.rays_by_kind[1];
-      stats->refracted_rays = r.stats.rays_by_kind[2];
-      stats->shadow_rays = r.stats.rays_by_kind[3];
-      stats->waves = static_cast<uint32_t>(r.stats.waves);
-      for (int d = 0; d < 32; ++d) stats->rays_per_depth[d] = r.stats.rays_per_depth[d];
-      PrismAccel accel = PRISM_ACCEL_BVH;
-      prismParseAccel(accelName(r.stats.accel), &accel);
-      stats->accel = accel;
-      stats->accel_build_seconds = r.stats.accel_stats.build_seconds;
-      stats->rays_per_pixel = r.stats.rays_per_pixel;
-      stats->first_hit_used = toC(r.stats.first_hit);
-      stats->setup_seconds = r.stats.setup_seconds;
-      stats->trace_seconds = r.stats.seconds - r.stats.setup_seconds;
-    }
+    if (stats) fillStats(r.stats, context->context->takeBuildSeconds(), stats);
     return PRISM_OK;
   });
 }

@@ -1,5 +1,8 @@
 #include "device/program_cache.h"
 
+#include <unistd.h>
+
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -72,7 +75,9 @@ void ProgramCache::store(const std::string& key, const std::vector<unsigned char
   if (ec) return;
   // Write then rename, so a concurrent reader never sees half a file.
   std::string final_path = m_folder + "/" + key + ".bin";
-  std::string tmp_path = final_path + ".tmp" + std::to_string(std::rand());
+  // Unique per process and call: contexts in several threads may store at once.
+  static std::atomic<unsigned long> stores{0};
+  std::string tmp_path = final_path + ".tmp" + std::to_string(getpid()) + "." + std::to_string(stores++);
   {
     std::ofstream out(tmp_path, std::ios::binary);
     std::uint64_t sum = checksum(binary), size = binary.size();

@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
   PrismMaterial material;
   PrismObject object;
   PrismMeshReport report = NULL;
+  PrismResult result = NULL;
+  const float* pixels = NULL;
   PrismMeshCounts mesh_counts;
   PrismPluginCandidateInfo plugin;
   PrismRenderOptions opts, small;
@@ -245,6 +247,34 @@ int main(int argc, char** argv) {
   BAD(prismGetAov(ctx, PRISM_AOV_DEPTH, NULL, 8 * 6), "prismGetAov");
   BAD(prismGetAov(ctx, PRISM_AOV_NORMAL, out, 8 * 6), "prismGetAov"); /* needs 3 floats a pixel */
   BAD(prismGetAov(ctx, (PrismAov)99, out, 8 * 6 * 3), "prismGetAov");
+
+  /* Results. */
+  BAD(prismRenderToResult(ctx, scene, &small, NULL), "prismRenderToResult");
+  BAD(prismRenderToResult(NULL, scene, &small, &result), "prismRenderToResult");
+  CHECK(result == NULL); /* a failed call leaves no result */
+  BAD(prismRenderToResult(ctx, NULL, &small, &result), "prismRenderToResult");
+  small.struct_size = 0;
+  BAD(prismRenderToResult(ctx, scene, &small, &result), "prismRenderToResult");
+  small.struct_size = sizeof small;
+  small.width = 0;
+  BAD(prismRenderToResult(ctx, scene, &small, &result), "prismRenderToResult");
+  small.width = 8;
+  CHECK_OK(prismRenderToResult(ctx, scene, &small, &result));
+  BAD(prismGetResultSize(NULL, &u32, &u32), "prismGetResultSize");
+  BAD(prismGetResultSize(result, NULL, &u32), "prismGetResultSize");
+  BAD(prismGetResultSize(result, &u32, NULL), "prismGetResultSize");
+  BAD(prismGetResultImage(NULL, &pixels), "prismGetResultImage");
+  BAD(prismGetResultImage(result, NULL), "prismGetResultImage");
+  BAD(prismGetResultAov(NULL, PRISM_AOV_DEPTH, &pixels, &u32), "prismGetResultAov");
+  BAD(prismGetResultAov(result, PRISM_AOV_DEPTH, NULL, &u32), "prismGetResultAov");
+  BAD(prismGetResultAov(result, PRISM_AOV_DEPTH, &pixels, NULL), "prismGetResultAov");
+  BAD(prismGetResultAov(result, (PrismAov)99, &pixels, &u32), "prismGetResultAov");
+  BAD(prismGetResultStats(NULL, &stats), "prismGetResultStats");
+  BAD(prismGetResultStats(result, NULL), "prismGetResultStats");
+  stats.struct_size = 0;
+  BAD(prismGetResultStats(result, &stats), "prismGetResultStats");
+  prismReleaseResult(result);
+  prismReleaseResult(NULL);
   EXPECT(prismGetKernelTime(ctx, 0, &text, &seconds, &launches), PRISM_ERROR_INVALID_OPERATION,
          "prismGetKernelTime"); /* the render was not profiled */
 
