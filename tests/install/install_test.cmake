@@ -2,7 +2,8 @@
 #  - examples/ configured with find_package(prism) against the prefix alone,
 #    built, and both programs run (each checks its own result);
 #  - examples/c/query_mesh.c compiled again with pkg-config's flags;
-#  - libprism exports exactly the functions prism.h declares;
+#  - libprism exports exactly the functions prism.h declares, and
+#    docs/c-api.md lists each;
 #  - the installed prism command finds the installed library and plugins.
 # Run by CTest: cmake -DBUILD=<build dir> -DSOURCE=<source dir> -DWORK=<scratch> -P install_test.cmake
 cmake_minimum_required(VERSION 3.20)
@@ -49,6 +50,7 @@ foreach(line ${lines})
   list(APPEND exported ${name})
 endforeach()
 file(READ ${SOURCE}/include/prism.h header)
+file(READ ${SOURCE}/docs/c-api.md c_api_doc)
 string(REGEX MATCHALL "PRISM_API[^;(]*[ *]prism[A-Za-z0-9]+\\(" declarations "${header}")
 list(LENGTH declarations declared)
 if(declared LESS 10)
@@ -59,6 +61,11 @@ foreach(d ${declarations})
   string(REGEX REPLACE "\\($" "" name "${name}")
   if(NOT name IN_LIST exported)
     message(FATAL_ERROR "install_test: prism.h declares ${name}, which libprism does not export")
+  endif()
+  # docs/c-api.md lists every function with its errors.
+  string(FIND "${c_api_doc}" "`${name}`" listed)
+  if(listed EQUAL -1)
+    message(FATAL_ERROR "install_test: docs/c-api.md does not list ${name}")
   endif()
 endforeach()
 
