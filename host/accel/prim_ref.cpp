@@ -74,8 +74,8 @@ DecomposedTransform decomposedEnd(const MotionGpu& m, int end) {
   const float* t = end ? m.translate1 : m.translate0;
   // A translation's record keeps its rotation and stretch in the close slots only.
   const bool second = end || m.kind == MOTION_TRANSLATE;
-  const float* q = second ? m.rotate1 : m.rotate0;
-  const float* s = second ? m.stretch1 : m.stretch0;
+  const float* q = (second ? m.shape1 : m.shape0) + MOTION_ROTATION;
+  const float* s = (second ? m.shape1 : m.shape0) + MOTION_STRETCH;
   DecomposedTransform d;
   d.translate = {t[0], t[1], t[2]};
   double w2 = 1.0 - (double(q[0]) * q[0] + double(q[1]) * q[1] + double(q[2]) * q[2]);

@@ -107,8 +107,8 @@ MotionGpu flattenMotion(const Transform& open, const Transform& close, const Cam
   g.shutter_close = static_cast<float>(camera.shutter_close);
   const DecomposedTransform ends[2] = {decompose(open), decompose(close)};
   float* translate[2] = {g.translate0, g.translate1};
-  float* rotate[2] = {g.rotate0, g.rotate1};
-  float* stretch[2] = {g.stretch0, g.stretch1};
+  float* rotate[2] = {g.shape0 + MOTION_ROTATION, g.shape1 + MOTION_ROTATION};
+  float* stretch[2] = {g.shape0 + MOTION_STRETCH, g.shape1 + MOTION_STRETCH};
   for (int e = 0; e < 2; ++e) {
     put3(translate[e], ends[e].translate);
     for (int i = 0; i < 3; ++i) rotate[e][i] = static_cast<float>(ends[e].rotate[i]);
@@ -117,15 +117,11 @@ MotionGpu flattenMotion(const Transform& open, const Transform& close, const Cam
     for (int i = 0; i < 6; ++i) stretch[e][i] = static_cast<float>(packed[i]);
   }
   // Translation alone: keep the constant world-to-object linear part instead.
-  if (std::memcmp(g.rotate0, g.rotate1, sizeof g.rotate0) == 0 &&
-      std::memcmp(g.stretch0, g.stretch1, sizeof g.stretch0) == 0) {
+  if (std::memcmp(g.shape0, g.shape1, sizeof g.shape0) == 0) {
     g.kind = MOTION_TRANSLATE;
     const Transform inv = open.inverse();
-    float linear[9];
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) linear[3 * i + j] = static_cast<float>(inv.m[i][j]);
-    std::memcpy(g.rotate0, linear, 3 * sizeof(float));
-    std::memcpy(g.stretch0, linear + 3, 6 * sizeof(float));
+      for (int j = 0; j < 3; ++j) g.shape0[3 * i + j] = static_cast<float>(inv.m[i][j]);
   }
   return g;
 }

@@ -25,19 +25,19 @@ inline void motion_world_to_object(__global const MotionGpu* motion, float time,
   float s = close > open ? clamp((time - open) / (close - open), 0.0f, 1.0f) : 0.0f;
   float3 t = mix(vload3(0, motion->translate0), vload3(0, motion->translate1), s);
   if (motion->kind == MOTION_TRANSLATE) {
-    __global const float* linear = motion->rotate0; /* rotate0 and stretch0: 9 floats, row by row */
+    __global const float* linear = motion->shape0; /* 9 floats, row by row */
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) m[4 * i + j] = linear[3 * i + j];
       m[4 * i + 3] = -(m[4 * i] * t.x + m[4 * i + 1] * t.y + m[4 * i + 2] * t.z);
     }
     return;
   }
-  float3 a0 = vload3(0, motion->rotate0), a1 = vload3(0, motion->rotate1);
+  float3 a0 = vload3(0, motion->shape0 + MOTION_ROTATION), a1 = vload3(0, motion->shape1 + MOTION_ROTATION);
   float4 q0 = (float4)(a0, sqrt(fmax(0.0f, 1.0f - dot(a0, a0))));
   float4 q1 = (float4)(a1, sqrt(fmax(0.0f, 1.0f - dot(a1, a1))));
   float4 q = motion_slerp(q0, q1, s);
   float st[6];
-  for (int i = 0; i < 6; ++i) st[i] = mix(motion->stretch0[i], motion->stretch1[i], s);
+  for (int i = 0; i < 6; ++i) st[i] = mix(motion->shape0[MOTION_STRETCH + i], motion->shape1[MOTION_STRETCH + i], s);
   /* The stretch's inverse (symmetric), by cofactors. */
   float a = st[0], b = st[1], c = st[2], d = st[3], e = st[4], f = st[5];
   float c00 = d * f - e * e, c01 = c * e - b * f, c02 = b * e - c * d;

@@ -13,17 +13,21 @@
 #define OBJECT_MOTION 100 /* the type of a motion record: not a primitive */
 
 /* A motion whose rotation and stretch are the same at both ends translates
- * only: its record keeps, in place of rotate0 and stretch0, the constant
- * world-to-object linear part (its 3 rows), so a ray needs no slerp and no
- * inverse. */
+ * only: its record keeps, in place of shape0, the constant world-to-object
+ * linear part (its 3 rows), so a ray needs no slerp and no inverse. */
+#define MOTION_ROTATION 0 /* offsets in shape0, shape1 */
+#define MOTION_STRETCH 3
 #define MOTION_GENERAL 0
 #define MOTION_TRANSLATE 1
 
 typedef struct MotionGpu {
   int type; /* OBJECT_MOTION */
   float shutter_open, shutter_close; /* the interval time runs over */
-  float translate0[3], rotate0[3], stretch0[6]; /* stretch: xx, xy, xz, yy, yz, zz */
-  float translate1[3], rotate1[3], stretch1[6];
+  /* shape: the rotation's x, y, z (MOTION_ROTATION), then the stretch's xx, xy,
+   * xz, yy, yz, zz (MOTION_STRETCH): one array, so a translation's 9-float
+   * linear part stays inside it. */
+  float translate0[3], shape0[9];
+  float translate1[3], shape1[9];
   int kind; /* MOTION_* */
 } MotionGpu;
 
