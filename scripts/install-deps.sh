@@ -15,6 +15,7 @@ packages=(
   clang libclang-rt-14-dev # fuzz targets (libFuzzer with ASan/UBSan)
   bc
   python3 python3-venv     # the Python package and its tests (scripts/test-python.sh)
+  oclgrind                 # the kernels under a checking simulator (tests/oclgrind/)
 )
 
 missing=()

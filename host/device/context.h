@@ -42,6 +42,8 @@ class Buffer {
   // Enqueues filling the first `bytes` (a multiple of the pattern's size) with a
   // repeated pattern of 1, 2, 4, ... 128 bytes.
   void fill(const void* pattern, size_t pattern_bytes, size_t bytes);
+  // Enqueues copying `bytes` from this buffer at `offset` into `to` at `to_offset`.
+  void copyTo(Buffer& to, size_t bytes, size_t offset = 0, size_t to_offset = 0) const;
 
   template <typename T>
   void writeVector(const std::vector<T>& v) {

@@ -225,9 +225,7 @@ void Renderer::renderSamples(const SamplingOptions& sampling, RenderResult& resu
         .arg(m_chunk_xy)
         .arg(m_chunk_aov)
         .run(n);
-    PRISM_CL_CHECK(clEnqueueCopyBuffer(m_context.queue(), m_chunk_xy.handle(), m_sample_xy.handle(), 0,
-                                       first * kPositionBytesPerSample, n * kPositionBytesPerSample, 0, nullptr,
-                                       nullptr));
+    m_chunk_xy.copyTo(m_sample_xy, n * kPositionBytesPerSample, 0, first * kPositionBytesPerSample);
   };
   // The Z-buffer takes kZBufferBatch samples at once: their positions first,
   // rasterised together, then resolved chunk by chunk.
@@ -357,8 +355,7 @@ void Renderer::traceLevel(int depth, size_t count) {
   m_stats->waves = std::max(m_stats->waves, depth + 1);
   for (size_t start = 0; start < count; start += kSliceRays) {
     size_t n = std::min(kSliceRays, count - start);
-    PRISM_CL_CHECK(clEnqueueCopyBuffer(m_context.queue(), m_levels[depth].handle(), m_work.handle(),
-                                       start * sizeof(RayGpu), 0, n * sizeof(RayGpu), 0, nullptr, nullptr));
+    m_levels[depth].copyTo(m_work, n * sizeof(RayGpu), start * sizeof(RayGpu), 0);
     traceSlice(depth, n);
   }
 }

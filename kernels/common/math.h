@@ -14,7 +14,7 @@
  * and the octree's steps as functions of their own), which keeps that state in
  * memory; clang-based OpenCL compilers honour always_inline, others get the
  * plain inline hint. */
-#if defined(__clang__)
+#if defined(__clang__) && !defined(PRISM_NO_FORCED_INLINE) /* the latter: tests/oclgrind/check.sh */
 #define PRISM_HOT inline __attribute__((always_inline))
 #else
 #define PRISM_HOT inline
