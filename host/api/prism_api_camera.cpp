@@ -1,9 +1,11 @@
 // C API: the scene's camera and the choice of acceleration structure.
 #include <cstring>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "api/api_boundary.h"
 #include "api/api_handles.h"
-#include "scene/camera_check.h"
+#include "scene/scene_loader.h"
 
 using namespace prism;
 
@@ -17,7 +19,7 @@ const AccelName kAccelNames[] = {
     {"bvh", PRISM_ACCEL_BVH},   {"octree", PRISM_ACCEL_OCTREE}, {"bsp", PRISM_ACCEL_BSP},
     {"none", PRISM_ACCEL_NONE}, {"auto", PRISM_ACCEL_AUTO}};
 
-Vec3 vec(const float* v) { return {v[0], v[1], v[2]}; }
+nlohmann::json triple(const float* v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
 void put(float* dst, const Vec3& v) {
   dst[0] = static_cast<float>(v.x);
   dst[1] = static_cast<float>(v.y);
@@ -50,22 +52,31 @@ PRISM_API PrismStatus prismSetCamera(PrismScene scene, const PrismCamera* camera
   if (!scene || !camera) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismSetCamera: NULL argument");
   if (camera->struct_size < sizeof(PrismCamera))
     return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismSetCamera: struct_size is too small (fill it with prismGetCamera)");
-  Camera c;
-  c.position = vec(camera->position);
-  c.look_at = vec(camera->look_at);
-  c.up = vec(camera->up);
-  c.fov = camera->fov_degrees;
-  c.aperture = camera->aperture;
-  c.focus_distance = camera->focus_distance;
-  c.shutter_open = camera->shutter_open;
-  c.shutter_close = camera->shutter_close;
-  c.moving = camera->moving != 0;
-  c.position_end = vec(camera->position_end);
-  c.look_at_end = vec(camera->look_at_end);
-  std::string problem = cameraProblem(c);
-  if (!problem.empty()) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismSetCamera: " + problem);
-  scene->scene.camera = c;
-  return PRISM_OK;
+  return guarded(__func__, [&] {
+    // The scene loader reads the camera, as it would from a file, into a scratch
+    // scene whose camera starts from the defaults: every field is replaced, and
+    // the rules and messages are the file's. A focus distance of 0 (to look_at)
+    // and a camera that does not move are what a file says by leaving keys out.
+    nlohmann::json c{{"position", triple(camera->position)},
+                     {"look_at", triple(camera->look_at)},
+                     {"up", triple(camera->up)},
+                     {"fov", camera->fov_degrees},
+                     {"aperture", camera->aperture},
+                     {"shutter", nlohmann::json::array({camera->shutter_open, camera->shutter_close})}};
+    if (camera->focus_distance != 0) c["focus_distance"] = camera->focus_distance;
+    if (camera->moving) {
+      c["position_end"] = triple(camera->position_end);
+      c["look_at_end"] = triple(camera->look_at_end);
+    }
+    Scene scratch;
+    try {
+      addSceneFragment(scratch, nlohmann::json{{"camera", c}}, "", "");
+    } catch (const SceneError& e) {
+      throw std::invalid_argument(e.what());
+    }
+    scene->scene.camera = scratch.camera;
+    return PRISM_OK;
+  });
 }
 
 PRISM_API PrismStatus prismParseAccel(const char* name, PrismAccel* accel) {

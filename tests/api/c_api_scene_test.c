@@ -277,6 +277,17 @@ int main(int argc, char** argv) {
   prismDefaultMaterial(&m);
   m.ior = 0;
   sameRefusal(prismAddMaterial(typed, "thin", &m, NULL), "{\"materials\": {\"thin\": {\"ior\": 0}}}");
+  {
+    PrismCamera camera;
+    camera.struct_size = sizeof camera;
+    CHECK_OK(prismGetCamera(typed, &camera));
+    camera.fov_degrees = 200;
+    sameRefusal(prismSetCamera(typed, &camera), "{\"camera\": {\"fov\": 200}}");
+    camera.fov_degrees = 40;
+    camera.up[0] = 0, camera.up[1] = 0, camera.up[2] = 0;
+    sameRefusal(prismSetCamera(typed, &camera),
+                "{\"camera\": {\"position\": [0, 2, 6.5], \"look_at\": [0, 0.800000011920929, 0], \"up\": [0, 0, 0]}}");
+  }
   /* A file cannot name a material twice (its keys are unique); a call can, and is refused. */
   prismDefaultMaterial(&m);
   CHECK(prismAddMaterial(typed, "glass", &m, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
