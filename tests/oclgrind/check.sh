@@ -26,8 +26,7 @@ esac
 export XDG_CACHE_HOME="$work/cache"
 cd "$work"
 status=0
-# The simulated device's 128 MiB default is less than the Z-buffer's batch buffers.
-oclgrind "${checks[@]}" --global-mem-size 2147483648 --max-errors 20 --log "$work/oclgrind.log" "$@" >"$work/out.txt" 2>&1 || status=$?
+oclgrind "${checks[@]}" --max-errors 20 --log "$work/oclgrind.log" "$@" >"$work/out.txt" 2>&1 || status=$?
 cat "$work/out.txt"
 if [ "$status" -ne 0 ]; then
   echo "check.sh: the command failed under Oclgrind (exit $status)" >&2
