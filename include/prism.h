@@ -218,7 +218,12 @@ PRISM_API PrismStatus prismAddMeshArrays(PrismScene scene, const float* position
  * malformed JSON or a refused value. */
 PRISM_API PrismStatus prismAddSceneJson(PrismScene scene, const char* json);
 
-typedef enum PrismShadingModel { PRISM_SHADING_PHONG = 0, PRISM_SHADING_BLINN = 1 } PrismShadingModel;
+typedef enum PrismShadingModel {
+  PRISM_SHADING_PHONG = 0,
+  PRISM_SHADING_BLINN = 1,
+  PRISM_SHADING_COOK_TORRANCE = 2 /* roughness, distribution; Fresnel from ior */
+} PrismShadingModel;
+typedef enum PrismMicrofacet { PRISM_MICROFACET_BECKMANN = 0, PRISM_MICROFACET_GGX = 1 } PrismMicrofacet;
 
 /* A material of the Whitted model (docs/scene-format.md, "materials"). */
 typedef struct PrismMaterial {
@@ -230,12 +235,16 @@ typedef struct PrismMaterial {
   float shininess;    /* specular exponent, 0..1e6 */
   float reflect;      /* weight of the mirror ray, 0..1 */
   float transmit;     /* weight of the refracted ray and of shadow transmission, 0..1 */
-  float ior;          /* index of refraction of the inside, > 0 */
+  float ior;          /* index of refraction of the inside, > 0; Cook-Torrance's Fresnel factor
+                         too (prismDefaultMaterial gives Phong's 1, which reflects nothing there:
+                         set about 1.5 for a plastic) */
   float gloss;        /* Phong-lobe exponent of reflected rays; 0: a perfect mirror */
   float translucency; /* the same for refracted rays; 0: clear */
   int checker;        /* nonzero: a checker texture multiplies ambient and diffuse */
   float checker_color1[3], checker_color2[3];
   float checker_scale; /* size of one square in surface units, > 0 */
+  float roughness;      /* Cook-Torrance: Beckmann's m or GGX's alpha, 0.001..1 */
+  uint32_t distribution; /* Cook-Torrance: a PrismMicrofacet */
 } PrismMaterial;
 
 /* Fills `material` with the defaults a scene file's material starts from. */

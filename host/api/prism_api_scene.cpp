@@ -38,8 +38,17 @@ void addChecked(PrismScene scene, const Json& fragment) {
   }
 }
 
+const char* modelName(uint32_t model) {
+  switch (model) {
+    case PRISM_SHADING_PHONG: return "phong";
+    case PRISM_SHADING_BLINN: return "blinn";
+    case PRISM_SHADING_COOK_TORRANCE: return "cook-torrance";
+  }
+  return "?";
+}
+
 Json materialJson(const PrismMaterial& m) {
-  Json j{{"model", m.model == PRISM_SHADING_BLINN ? "blinn" : m.model == PRISM_SHADING_PHONG ? "phong" : "?"},
+  Json j{{"model", modelName(m.model)},
          {"ambient", triple(m.ambient)},
          {"diffuse", triple(m.diffuse)},
          {"specular", triple(m.specular)},
@@ -49,6 +58,10 @@ Json materialJson(const PrismMaterial& m) {
          {"ior", m.ior},
          {"gloss", m.gloss},
          {"translucency", m.translucency}};
+  if (m.model == PRISM_SHADING_COOK_TORRANCE) {
+    j["roughness"] = m.roughness;
+    j["distribution"] = m.distribution == PRISM_MICROFACET_GGX ? "ggx" : m.distribution == PRISM_MICROFACET_BECKMANN ? "beckmann" : "?";
+  }
   if (m.checker)
     j["texture"] = Json{{"type", "checker"},
                         {"color1", triple(m.checker_color1)},
@@ -111,6 +124,8 @@ PRISM_API void prismDefaultMaterial(PrismMaterial* material) {
   material->ior = static_cast<float>(d.ior);
   material->gloss = static_cast<float>(d.gloss);
   material->translucency = static_cast<float>(d.translucency);
+  material->roughness = static_cast<float>(d.roughness);
+  material->distribution = static_cast<uint32_t>(d.distribution);
   const Texture t;
   put(material->checker_color1, t.color1);
   put(material->checker_color2, t.color2);
@@ -121,8 +136,8 @@ PRISM_API PrismStatus prismAddMaterial(PrismScene scene, const char* name, const
                                        uint32_t* out_material) {
   PRISM_REQUIRE(scene && name && material, "prismAddMaterial: NULL argument");
   PRISM_REQUIRE(material->struct_size >= sizeof(PrismMaterial), "prismAddMaterial: struct_size is too small");
-  PRISM_REQUIRE(material->model == PRISM_SHADING_PHONG || material->model == PRISM_SHADING_BLINN,
-                "prismAddMaterial: model must be PRISM_SHADING_PHONG or PRISM_SHADING_BLINN");
+  PRISM_REQUIRE(material->model <= PRISM_SHADING_COOK_TORRANCE,
+                "prismAddMaterial: model must be PRISM_SHADING_PHONG, PRISM_SHADING_BLINN or PRISM_SHADING_COOK_TORRANCE");
   return guarded(__func__, [&] {
     addChecked(scene, Json{{"materials", Json{{name, materialJson(*material)}}}});
     if (out_material) {

@@ -142,6 +142,8 @@ MaterialGpu flattenMaterial(const Material& m) {
   g.texture_scale = static_cast<float>(m.texture.scale);
   g.gloss = static_cast<float>(m.gloss);
   g.translucency = static_cast<float>(m.translucency);
+  g.roughness = static_cast<float>(m.roughness);
+  g.distribution = static_cast<int>(m.distribution);
   return g;
 }
 

@@ -361,17 +361,33 @@ class SceneParser {
     checkObject(
         v, path,
         {"model", "ambient", "diffuse", "specular", "shininess", "reflect", "transmit", "ior", "texture", "gloss",
-         "translucency"});
+         "translucency", "roughness", "distribution"});
     static const Check unit = [](double x) { return x >= 0 && x <= 1; };
     Material m = defaultMaterial();
     if (const Json* p = find(v, "model")) {
-      const std::string model = string(*p, member(path, "model"), "a string (phong, blinn)");
+      const std::string model = string(*p, member(path, "model"), "a string (phong, blinn, cook-torrance)");
       if (model == "phong")
         m.model = ShadingModel::Phong;
       else if (model == "blinn")
         m.model = ShadingModel::Blinn;
+      else if (model == "cook-torrance")
+        m.model = ShadingModel::CookTorrance;
       else
-        fail(member(path, "model"), "unknown shading model '" + model + "' (expected phong, blinn)");
+        fail(member(path, "model"), "unknown shading model '" + model + "' (expected phong, blinn, cook-torrance)");
+    }
+    // Cook-Torrance's Fresnel factor needs an index: a plastic's unless given.
+    if (m.model == ShadingModel::CookTorrance) m.ior = 1.5;
+    if (const Json* p = find(v, "roughness"))
+      m.roughness = number(*p, member(path, "roughness"), "a number in [0.001, 1]",
+                           [](double x) { return x >= 1e-3 && x <= 1; });
+    if (const Json* p = find(v, "distribution")) {
+      const std::string name = string(*p, member(path, "distribution"), "a string (beckmann, ggx)");
+      if (name == "beckmann")
+        m.distribution = MicrofacetDistribution::Beckmann;
+      else if (name == "ggx")
+        m.distribution = MicrofacetDistribution::Ggx;
+      else
+        fail(member(path, "distribution"), "unknown microfacet distribution '" + name + "' (expected beckmann, ggx)");
     }
     if (const Json* p = find(v, "ambient")) m.ambient = colour(*p, member(path, "ambient"));
     if (const Json* p = find(v, "diffuse")) m.diffuse = colour(*p, member(path, "diffuse"));

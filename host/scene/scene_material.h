@@ -7,7 +7,8 @@
 
 namespace prism {
 
-enum class ShadingModel { Phong = 0, Blinn = 1 };
+enum class ShadingModel { Phong = 0, Blinn = 1, CookTorrance = 2 };
+enum class MicrofacetDistribution { Beckmann = 0, Ggx = 1 };
 
 struct Texture {
   enum class Kind { None = 0, Checker = 1 };
@@ -31,6 +32,11 @@ struct Material {
   // directions (distributed ray tracing); 0: the ideal direction (mirror, clear).
   double gloss = 0;
   double translucency = 0;
+  // Cook-Torrance (kernels/shading/microfacet.h): the microfacets' roughness
+  // (Beckmann's RMS slope m, or GGX's alpha) and their distribution; the Fresnel
+  // factor comes from `ior`.
+  double roughness = 0.3;
+  MicrofacetDistribution distribution = MicrofacetDistribution::Beckmann;
   Texture texture;        // multiplies ambient and diffuse
   std::string diffuse_map;  // image file a mesh's material names for diffuse (MTL map_Kd), or ""
 };

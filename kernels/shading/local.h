@@ -1,9 +1,11 @@
 /* The local illumination models: diffuse (Lambert) plus the specular highlight of
- * Phong (R·V)^n or Blinn (N·H)^n, for one light. */
+ * Phong (R·V)^n, Blinn (N·H)^n or Cook-Torrance (shading/microfacet.h), for one
+ * light. */
 #ifndef PRISM_SHADING_LOCAL_H
 #define PRISM_SHADING_LOCAL_H
 
 #include "common/math.h"
+#include "shading/microfacet.h"
 #include "shading/optics.h"
 #include "shared/material_gpu.h"
 
@@ -11,6 +13,8 @@
  * direction to the viewer; n·l > 0 is the caller's precondition. */
 inline float3 local_light_term(__global const MaterialGpu* m, float3 kd, float3 n, float3 l, float3 v) {
   float n_dot_l = dot(n, l);
+  if (m->model == SHADING_COOK_TORRANCE)
+    return kd * n_dot_l + load3g(m->specular) * cook_torrance(n, l, v, m->roughness, m->distribution, m->ior);
   float spec_base;
   if (m->model == SHADING_BLINN) {
     spec_base = dot(n, normalize(l + v));

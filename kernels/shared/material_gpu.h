@@ -4,6 +4,10 @@
 
 #define SHADING_PHONG 0
 #define SHADING_BLINN 1
+#define SHADING_COOK_TORRANCE 2
+
+#define MICROFACET_BECKMANN 0
+#define MICROFACET_GGX 1
 
 #define TEXTURE_NONE 0
 #define TEXTURE_CHECKER 1
@@ -25,7 +29,11 @@ typedef struct MaterialGpu {
    * ideal directions; 0: the ideal direction itself (mirror, clear glass). */
   float gloss;
   float translucency;
-  int pad[3];
+  /* Cook-Torrance: the microfacets' roughness (Beckmann's m, the RMS slope; GGX's
+   * alpha) and their distribution (MICROFACET_*). */
+  float roughness;
+  int distribution;
+  int pad;
 } MaterialGpu;
 
 #endif

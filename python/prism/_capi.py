@@ -61,7 +61,8 @@ class Material(Structure):
     _fields_ = [("struct_size", c_size_t), ("model", c_uint32), ("ambient", float3), ("diffuse", float3),
                 ("specular", float3), ("shininess", c_float), ("reflect", c_float), ("transmit", c_float),
                 ("ior", c_float), ("gloss", c_float), ("translucency", c_float), ("checker", c_int),
-                ("checker_color1", float3), ("checker_color2", float3), ("checker_scale", c_float)]
+                ("checker_color1", float3), ("checker_color2", float3), ("checker_scale", c_float),
+                ("roughness", c_float), ("distribution", c_uint32)]
 
 
 class Object(Structure):

@@ -10,7 +10,8 @@ import numpy as np
 from . import _capi
 from ._capi import check, lib
 
-_SHADING = {"phong": 0, "blinn": 1}
+_SHADING = {"phong": 0, "blinn": 1, "cook-torrance": 2}
+_MICROFACET = {"beckmann": 0, "ggx": 1}
 _OBJECT = {"sphere": 0, "box": 1, "plane": 2, "triangle": 3}
 
 
@@ -83,15 +84,27 @@ class Scene:
         return self
 
     def add_material(self, name, model="phong", ambient=None, diffuse=None, specular=None, shininess=None,
-                     reflect=None, transmit=None, ior=None, gloss=None, translucency=None, checker=None):
-        """Adds a material; unnamed arguments keep the scene format's defaults.
-        `checker`: (color1, color2, scale) for a checker texture. Returns its index."""
+                     reflect=None, transmit=None, ior=None, gloss=None, translucency=None, checker=None,
+                     roughness=None, distribution="beckmann"):
+        """Adds a material; unnamed arguments keep the scene format's defaults
+        (model phong, blinn or cook-torrance; for cook-torrance `roughness`,
+        `distribution` beckmann or ggx, and ior 1.5 unless given). `checker`:
+        (color1, color2, scale) for a checker texture. Returns its index."""
         m = _capi.Material()
         lib.prismDefaultMaterial(ctypes.byref(m))
         if model not in _SHADING:
-            raise _capi.InvalidArgumentError("model: expected phong or blinn, got %r" % (model,),
+            raise _capi.InvalidArgumentError("model: expected phong, blinn or cook-torrance, got %r" % (model,),
                                              "PRISM_ERROR_INVALID_ARGUMENT")
         m.model = _SHADING[model]
+        if model == "cook-torrance":
+            if ior is None:
+                ior = 1.5  # the scene format's default for this model
+            if roughness is not None:
+                m.roughness = float(roughness)
+            if distribution not in _MICROFACET:
+                raise _capi.InvalidArgumentError("distribution: expected beckmann or ggx, got %r" % (distribution,),
+                                                 "PRISM_ERROR_INVALID_ARGUMENT")
+            m.distribution = _MICROFACET[distribution]
         for field, value in (("ambient", ambient), ("diffuse", diffuse), ("specular", specular)):
             if value is not None:
                 setattr(m, field, _triple(np.broadcast_to(value, 3), field))

@@ -28,12 +28,13 @@ def whitted_dict():
                         "texture": {"type": "checker", "color1": [1, 0, 0], "color2": [1, 1, 0], "scale": 1}},
             "glass": {"model": "blinn", "ambient": 0, "diffuse": 0.0625, "specular": 0.875, "shininess": 300,
                       "reflect": 0.125, "transmit": 0.875, "ior": 1.5},
+            "brushed": {"model": "cook-torrance", "roughness": 0.25, "distribution": "ggx", "specular": 0.75},
         },
         "lights": [{"position": [-4, 7, 6], "intensity": 0.75}],
         "objects": [
             {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "checker"},
             {"type": "sphere", "center": [-0.75, 1, 0.75], "radius": 1, "material": "glass"},
-            {"type": "box", "min": [1, 0, -1], "max": [2, 1, 0]},
+            {"type": "box", "min": [1, 0, -1], "max": [2, 1, 0], "material": "brushed"},
             {"type": "triangle", "vertices": [[-3, 0, -2], [-1, 0, -2], [-2, 2, -2]], "material": "glass"},
         ],
     }
@@ -47,10 +48,11 @@ def test_a_scene_built_in_code_renders_as_the_same_scene_as_json(ctx):
     built.add_material("checker", diffuse=0.9, shininess=16, checker=((1, 0, 0), (1, 1, 0), 1))
     built.add_material("glass", model="blinn", ambient=0, diffuse=0.0625, specular=0.875, shininess=300,
                        reflect=0.125, transmit=0.875, ior=1.5)
+    built.add_material("brushed", model="cook-torrance", roughness=0.25, distribution="ggx", specular=0.75)
     built.add_point_light((-4, 7, 6), intensity=0.75)
     assert built.add_plane((0, 0, 0), (0, 1, 0), material="checker") == 0
     assert built.add_sphere((-0.75, 1, 0.75), 1, material="glass") == 1
-    assert built.add_box((1, 0, -1), (2, 1, 0)) == 2
+    assert built.add_box((1, 0, -1), (2, 1, 0), material="brushed") == 2
     assert built.add_triangle([[-3, 0, -2], [-1, 0, -2], [-2, 2, -2]], material="glass") == 3
     written = prism.Scene.from_json(whitted_dict())
     a = ctx.render(built, width=72, height=40, max_depth=6, aovs=("depth", "primid"))

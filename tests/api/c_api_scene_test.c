@@ -51,6 +51,18 @@ static PrismMaterial glass(void) {
   return m;
 }
 
+static PrismMaterial brushed(void) {
+  PrismMaterial m;
+  prismDefaultMaterial(&m);
+  m.model = PRISM_SHADING_COOK_TORRANCE;
+  m.diffuse[0] = 0.3f, m.diffuse[1] = 0.2f, m.diffuse[2] = 0.1f;
+  m.specular[0] = m.specular[1] = m.specular[2] = 0.8f;
+  m.roughness = 0.25f;
+  m.distribution = PRISM_MICROFACET_GGX;
+  m.ior = 1.5f;
+  return m;
+}
+
 static PrismMaterial mirror(void) {
   PrismMaterial m;
   prismDefaultMaterial(&m);
@@ -76,7 +88,8 @@ static void putVec(char* buf, size_t size, const float* v) {
 }
 
 static void putMaterial(char* buf, size_t size, const char* name, const PrismMaterial* m, int last) {
-  put(buf, size, "\"%s\": {\"model\": \"%s\", \"ambient\": ", name, m->model == PRISM_SHADING_BLINN ? "blinn" : "phong");
+  static const char* const models[] = {"phong", "blinn", "cook-torrance"};
+  put(buf, size, "\"%s\": {\"model\": \"%s\", \"ambient\": ", name, models[m->model]);
   putVec(buf, size, m->ambient);
   put(buf, size, ", \"diffuse\": ");
   putVec(buf, size, m->diffuse);
@@ -84,6 +97,9 @@ static void putMaterial(char* buf, size_t size, const char* name, const PrismMat
   putVec(buf, size, m->specular);
   put(buf, size, ", \"shininess\": %.17g, \"reflect\": %.17g, \"transmit\": %.17g, \"ior\": %.17g",
       (double)m->shininess, (double)m->reflect, (double)m->transmit, (double)m->ior);
+  if (m->model == PRISM_SHADING_COOK_TORRANCE)
+    put(buf, size, ", \"roughness\": %.17g, \"distribution\": \"%s\"", (double)m->roughness,
+        m->distribution == PRISM_MICROFACET_GGX ? "ggx" : "beckmann");
   if (m->checker) {
     put(buf, size, ", \"texture\": {\"type\": \"checker\", \"color1\": ");
     putVec(buf, size, m->checker_color1);
@@ -96,7 +112,7 @@ static void putMaterial(char* buf, size_t size, const char* name, const PrismMat
 
 /* The scene as scene-format text, from the same floats. */
 static void sceneJson(char* buf, size_t size) {
-  PrismMaterial c = checker(), g = glass(), m = mirror();
+  PrismMaterial c = checker(), g = glass(), m = mirror(), b = brushed();
   buf[0] = 0;
   put(buf, size, "{\"camera\": {\"position\": ");
   putVec(buf, size, kEye);
@@ -109,7 +125,8 @@ static void sceneJson(char* buf, size_t size) {
   put(buf, size, "},\n \"materials\": {");
   putMaterial(buf, size, "checker", &c, 0);
   putMaterial(buf, size, "mirror", &m, 0);
-  putMaterial(buf, size, "glass", &g, 1);
+  putMaterial(buf, size, "glass", &g, 0);
+  putMaterial(buf, size, "brushed", &b, 1);
   put(buf, size, "},\n \"lights\": [{\"position\": ");
   putVec(buf, size, kLight1);
   put(buf, size, ", \"color\": ");
@@ -138,7 +155,7 @@ static void sceneJson(char* buf, size_t size) {
   putVec(buf, size, kBoxMin);
   put(buf, size, ", \"max\": ");
   putVec(buf, size, kBoxMax);
-  put(buf, size, "}]}");
+  put(buf, size, ", \"material\": \"brushed\"}]}");
 }
 
 /* The same scene through the typed calls. */
@@ -166,6 +183,8 @@ static int buildInCode(PrismScene* out) {
   m = glass();
   CHECK_OK(prismAddMaterial(scene, "glass", &m, &index));
   CHECK(index == 3);
+  m = brushed();
+  CHECK_OK(prismAddMaterial(scene, "brushed", &m, NULL));
   CHECK_OK(prismAddPointLight(scene, kLight1, kLight1Color, kLight1Power));
   CHECK_OK(prismAddPointLight(scene, kLight2, kLight2Color, kLight2Power));
   prismDefaultObject(&o, PRISM_OBJECT_PLANE); /* the point (origin) and normal (+y) it starts with */
@@ -189,6 +208,7 @@ static int buildInCode(PrismScene* out) {
   prismDefaultObject(&o, PRISM_OBJECT_BOX);
   memcpy(o.box_min, kBoxMin, sizeof kBoxMin);
   memcpy(o.box_max, kBoxMax, sizeof kBoxMax);
+  o.material = "brushed";
   CHECK_OK(prismAddObject(scene, &o, &index));
   CHECK(index == 4);
   *out = scene;

@@ -182,6 +182,21 @@ TEST_CASE("materials, lights and objects fill in their defaults", "[scene]") {
   CHECK(s.objects[0].radius == 2);
 }
 
+TEST_CASE("Cook-Torrance materials take a roughness, a distribution and a plastic's index", "[scene]") {
+  const Scene s = parseScene(R"({"materials": {
+    "plastic": {"model": "cook-torrance"},
+    "metal": {"model": "cook-torrance", "roughness": 0.1, "distribution": "ggx", "ior": 3}}})",
+                             "ct.json");
+  REQUIRE(s.materials.size() == 3);
+  CHECK(s.materials[1].model == ShadingModel::CookTorrance);
+  CHECK(s.materials[1].roughness == 0.3);
+  CHECK(s.materials[1].distribution == MicrofacetDistribution::Beckmann);
+  CHECK(s.materials[1].ior == 1.5);  // the Fresnel factor needs an index; Phong's default 1 reflects nothing
+  CHECK(s.materials[2].roughness == 0.1);
+  CHECK(s.materials[2].distribution == MicrofacetDistribution::Ggx);
+  CHECK(s.materials[2].ior == 3);
+}
+
 TEST_CASE("a material named default replaces the built-in one", "[scene]") {
   const Scene s = parseScene(
       R"({"materials": {"red": {"diffuse": [1, 0, 0]}, "default": {"diffuse": [0, 0, 1]}},
@@ -250,7 +265,11 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
       {R"({"materials": []})", {"materials: expected an object"}},
       {R"({"materials": {"m": 3}})", {"materials.m: expected an object, got 3"}},
       {R"({"materials": {"m": {"model": "cook"}}})",
-       {"materials.m.model", "unknown shading model 'cook'", "phong, blinn"}},
+       {"materials.m.model", "unknown shading model 'cook'", "phong, blinn, cook-torrance"}},
+      {R"({"materials": {"m": {"model": "cook-torrance", "roughness": 0}}})",
+       {"materials.m.roughness", "[0.001, 1]", "got 0"}},
+      {R"({"materials": {"m": {"model": "cook-torrance", "distribution": "phong"}}})",
+       {"materials.m.distribution", "unknown microfacet distribution 'phong'", "beckmann, ggx"}},
       {R"({"materials": {"m": {"reflect": 1.5}}})", {"materials.m.reflect", "[0, 1]", "got 1.5"}},
       {R"({"materials": {"m": {"transmit": -0.1}}})", {"materials.m.transmit", "got -0.1"}},
       {R"({"materials": {"m": {"ior": 0}}})", {"materials.m.ior", "a positive number", "got 0"}},

@@ -96,6 +96,43 @@ TEST_CASE("a lit sphere's pixels equal the closed-form Phong and Blinn values", 
   }
 }
 
+TEST_CASE("a lit sphere's pixels equal the closed-form Cook-Torrance values", "[render][shading]") {
+  for (const char* distribution : {"beckmann", "ggx"}) {
+    std::string json = kLitSphere;
+    json.replace(json.find("\"shininess\": 20"), 15,
+                 std::string("\"model\": \"cook-torrance\", \"roughness\": 0.25, \"distribution\": \"") +
+                     distribution + "\"");
+    Scene scene = parseScene(json, "lit_sphere.json");
+    RenderOptions opt = RenderOptions::fromScene(scene);
+    RenderResult r = renderScene(scene, opt);
+
+    const Material& m = scene.materials[1];
+    const Light& light = scene.lights[0];
+    int compared = 0, highlighted = 0;
+    for (int j = 0; j < opt.height; j += 2)
+      for (int i = 0; i < opt.width; i += 2) {
+        RefRay ray = referencePrimaryRay(scene, opt, i, j);
+        double b = dot(ray.o, ray.d), c = dot(ray.o, ray.o) - 1, disc = b * b - c;
+        if (disc < 0.01) continue;
+        double t = -b - std::sqrt(disc);
+        Vec3 p = ray.o + ray.d * t, n = normalize(p), v = -ray.d;
+        Vec3 l = normalize(light.position - p);
+        Vec3 expected = mul(m.ambient, scene.render.ambient);
+        double n_dot_l = dot(n, l);
+        if (n_dot_l > 0) {
+          double spec = referenceCookTorrance(n, l, v, m.roughness, static_cast<int>(m.distribution), m.ior);
+          expected = expected + mul(light.color * light.intensity, m.diffuse * n_dot_l + m.specular * spec);
+          highlighted += spec > 0.05;
+        }
+        INFO(distribution << " pixel (" << i << ", " << j << ")");
+        CHECK(maxDiff(pixel(r, i, j), expected) < 1e-3);
+        ++compared;
+      }
+    CHECK(compared > 100);
+    CHECK(highlighted > 3);  // the highlight is there to be compared
+  }
+}
+
 TEST_CASE("a point in shadow gets only ambient light and behind a k_trans 0.5 sphere half the light",
           "[render][shadow]") {
   // The camera looks straight down at a floor; a sphere hangs above it, and a

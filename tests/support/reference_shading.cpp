@@ -116,4 +116,38 @@ RefRay referencePrimaryRay(const Scene& scene, const RenderOptions& options, int
   return r;
 }
 
+double referenceCookTorrance(const Vec3& n, const Vec3& l, const Vec3& v, double alpha, int distribution, double eta) {
+  const double n_l = dot(n, l), n_v = dot(n, v);
+  if (n_l <= 0 || n_v <= 0) return 0;
+  const Vec3 h = normalize(l + v);
+  const double c = dot(n, h), v_h = dot(v, h), a2 = alpha * alpha;
+  if (c <= 0 || v_h <= 0) return 0;
+  double d, g;
+  if (distribution == 1) {
+    const double k = c * c * (a2 - 1) + 1;
+    d = a2 / (M_PI * k * k);
+    auto g1 = [&](double x) { return 2 * x / (x + std::sqrt(a2 + (1 - a2) * x * x)); };
+    g = g1(n_l) * g1(n_v);
+  } else {
+    const double tan2 = (1 - c * c) / (c * c);
+    d = std::exp(-tan2 / a2) / (M_PI * a2 * c * c * c * c);
+    g = std::min({1.0, 2 * c * n_v / v_h, 2 * c * n_l / v_h});
+  }
+  double f = 1;
+  if (eta > 0) {
+    // Fresnel's sine and tangent laws for the angle of incidence v.h.
+    const double ti = std::acos(std::min(1.0, v_h)), st = std::sin(ti) / eta;
+    if (st >= 1) {
+      f = 1;
+    } else if (ti < 1e-9) {
+      f = std::pow((eta - 1) / (eta + 1), 2);
+    } else {
+      const double tt = std::asin(st);
+      const double rs = std::sin(ti - tt) / std::sin(ti + tt), rp = std::tan(ti - tt) / std::tan(ti + tt);
+      f = 0.5 * (rs * rs + rp * rp);
+    }
+  }
+  return M_PI * f * d * g / (4 * n_v);
+}
+
 }  // namespace prism::test
