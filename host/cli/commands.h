@@ -25,5 +25,7 @@ void printError(const std::string& message);
 void printWarning(const std::string& message);
 // Reports the library's last error (prismGetLastError) and returns kExitFailure.
 int failWithLastError();
+// The library's last message without the C function's name.
+std::string lastErrorForUser();
 
 }  // namespace prism_cli

@@ -20,9 +20,6 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--aa-max-level", "", true}, {"--first-hit", "", true},
 };
 
-constexpr uint32_t kMaxAdaptiveLevel = 8;
-constexpr uint32_t kMaxPoissonSpp = 4096;
-
 // The same list as the library's image writer, checked here so that a typo in -o
 // does not cost a whole render.
 bool isKnownImageFormat(const std::string& ext) {
@@ -40,38 +37,6 @@ void checkOutput(const RenderRequest& request) {
     throw UsageError(std::string("--aov ") + name + " cannot be written to '" + request.output_path +
                      "': 8-bit PNG cannot hold its values (+inf, -1, distances over 1); "
                      "use a float format: .exr, .pfm, .tif or .hdr");
-  }
-}
-
-// --aa and --spp given together must fit (the library checks again whatever the
-// values' source; this catches a command-line mistake before the scene is read).
-void checkSampling(const RenderRequest& request) {
-  if (!request.aa || !request.spp) return;
-  const uint32_t spp = *request.spp;
-  const std::string mode = prismAaName(*request.aa);
-  switch (*request.aa) {
-    case PRISM_AA_NONE:
-    case PRISM_AA_QUINCUNX:
-    case PRISM_AA_ADAPTIVE:
-      if (spp != 1)
-        throw UsageError("--aa " + mode + " places its own samples, so --spp must be 1 (got " + std::to_string(spp) +
-                         "); use --aa grid, jitter, poisson or random for more samples per pixel");
-      break;
-    case PRISM_AA_GRID: {
-      uint32_t n = 1;
-      while ((n + 1) * (n + 1) <= spp) ++n;
-      if (n * n != spp)
-        throw UsageError("--aa grid needs a square --spp (n x n samples), got " + std::to_string(spp) +
-                         "; nearest: " + std::to_string(n * n) + " or " + std::to_string((n + 1) * (n + 1)));
-      break;
-    }
-    case PRISM_AA_POISSON:
-      if (spp > kMaxPoissonSpp)
-        throw UsageError("--aa poisson takes at most " + std::to_string(kMaxPoissonSpp) + " samples per pixel, got --spp " +
-                         std::to_string(spp));
-      break;
-    default:
-      break;
   }
 }
 
@@ -106,9 +71,9 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
   if (output->empty()) throw UsageError("--output: empty file name");
   request.output_path = *output;
 
-  request.width = parsed.uint32("--width", 1);
-  request.height = parsed.uint32("--height", 1);
-  request.spp = parsed.uint32("--spp", 1);
+  request.width = parsed.uint32("--width", 0);
+  request.height = parsed.uint32("--height", 0);
+  request.spp = parsed.uint32("--spp", 0);
   request.max_depth = parsed.uint32("--max-depth", 0);
   request.min_weight = parsed.nonNegativeFloat("--min-weight");
   request.seed = parsed.uint64("--seed");
@@ -144,17 +109,15 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
     request.filter = filter;
   }
   request.aa_threshold = parsed.nonNegativeFloat("--aa-threshold");
+  // Ranges and combinations (--aa grid with a square --spp, ...) are the
+  // library's to check, once the scene's options are known (render_command.cpp).
   request.aa_max_level = parsed.uint32("--aa-max-level", 0);
-  if (request.aa_max_level && *request.aa_max_level > kMaxAdaptiveLevel)
-    throw UsageError("--aa-max-level: expected 0.." + std::to_string(kMaxAdaptiveLevel) + ", got " +
-                     std::to_string(*request.aa_max_level));
   if (const auto name = parsed.text("--first-hit")) {
     PrismFirstHit first_hit;
     if (prismParseFirstHit(name->c_str(), &first_hit) != PRISM_OK)
       throw UsageError("--first-hit: unknown mode '" + *name + "' (expected zbuffer, trace or auto)");
     request.first_hit = first_hit;
   }
-  checkSampling(request);
   request.camera_pos = parsed.triple("--camera-pos");
   request.camera_look = parsed.triple("--camera-look");
   request.camera_up = parsed.triple("--camera-up");

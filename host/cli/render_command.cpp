@@ -3,10 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "args.h"
 #include "commands.h"
 #include "help_text.h"
 #include "interrupt.h"
@@ -35,27 +37,65 @@ void printSceneWarnings(PrismScene scene) {
   }
 }
 
-void applyOverrides(const RenderRequest& request, PrismRenderOptions& options) {
-  if (request.width) options.width = *request.width;
-  if (request.height) options.height = *request.height;
-  if (request.spp) options.spp = *request.spp;
-  if (request.max_depth) options.max_depth = *request.max_depth;
-  if (request.min_weight) options.min_weight = *request.min_weight;
-  if (request.seed) options.seed = *request.seed;
-  if (request.accel) options.accel = *request.accel;
-  if (request.aa) {
-    options.aa = *request.aa;
+// A render-option flag given on the command line, and what it does to the options.
+struct Override {
+  const char* flags;  // as the user wrote them, for messages
+  std::function<void(PrismRenderOptions&)> apply;
+};
+
+std::vector<Override> overridesOf(const RenderRequest& request) {
+  std::vector<Override> out;
+  auto add = [&](bool given, const char* flags, std::function<void(PrismRenderOptions&)> apply) {
+    if (given) out.push_back({flags, std::move(apply)});
+  };
+  const RenderRequest& r = request;
+  add(r.width.has_value(), "--width", [&r](PrismRenderOptions& o) { o.width = *r.width; });
+  add(r.height.has_value(), "--height", [&r](PrismRenderOptions& o) { o.height = *r.height; });
+  add(r.spp.has_value(), "--spp", [&r](PrismRenderOptions& o) { o.spp = *r.spp; });
+  add(r.max_depth.has_value(), "--max-depth", [&r](PrismRenderOptions& o) { o.max_depth = *r.max_depth; });
+  add(r.min_weight.has_value(), "--min-weight", [&r](PrismRenderOptions& o) { o.min_weight = *r.min_weight; });
+  add(r.seed.has_value(), "--seed", [&r](PrismRenderOptions& o) { o.seed = *r.seed; });
+  add(r.accel.has_value(), "--accel", [&r](PrismRenderOptions& o) { o.accel = *r.accel; });
+  add(r.aa.has_value(), "--aa", [&r](PrismRenderOptions& o) {
+    o.aa = *r.aa;
     // None, quincunx and adaptive place their own samples: a scene's spp does not
-    // apply to them (an explicit --spp does, and was checked).
-    const bool own_samples = *request.aa == PRISM_AA_NONE || *request.aa == PRISM_AA_QUINCUNX ||
-                             *request.aa == PRISM_AA_ADAPTIVE;
-    if (own_samples && !request.spp) options.spp = 1;
+    // apply to them (an explicit --spp does).
+    const bool own_samples = *r.aa == PRISM_AA_NONE || *r.aa == PRISM_AA_QUINCUNX || *r.aa == PRISM_AA_ADAPTIVE;
+    if (own_samples && !r.spp) o.spp = 1;
+  });
+  add(r.filter.has_value(), "--filter", [&r](PrismRenderOptions& o) { o.filter = *r.filter; });
+  add(r.aa_threshold.has_value(), "--aa-threshold", [&r](PrismRenderOptions& o) { o.aa_threshold = *r.aa_threshold; });
+  add(r.aa_max_level.has_value(), "--aa-max-level", [&r](PrismRenderOptions& o) { o.aa_max_level = *r.aa_max_level; });
+  add(r.first_hit.has_value(), "--first-hit", [&r](PrismRenderOptions& o) { o.first_hit = *r.first_hit; });
+  add(r.stats, "--stats", [](PrismRenderOptions& o) { o.profile = 1; });
+  return out;
+}
+
+// The scene's options with the command line's flags applied, checked by the
+// library (one place for the rules of the scene format, the C API and these
+// flags). Options the flags made impossible are a usage error naming the flags
+// at fault: those refused alone on the scene's options, else all those given
+// (a combination, such as --aa grid with --spp 5). Returns false, with the
+// message printed, when the scene's own options are refused.
+bool applyOverrides(const RenderRequest& request, PrismRenderOptions& options) {
+  const PrismRenderOptions scene_options = options;
+  const std::vector<Override> overrides = overridesOf(request);
+  for (const Override& o : overrides) o.apply(options);
+  if (prismCheckRenderOptions(&options) == PRISM_OK) return true;
+  const std::string reason = lastErrorForUser();
+  if (overrides.empty()) {
+    printError(reason);
+    return false;
   }
-  if (request.filter) options.filter = *request.filter;
-  if (request.aa_threshold) options.aa_threshold = *request.aa_threshold;
-  if (request.aa_max_level) options.aa_max_level = *request.aa_max_level;
-  if (request.first_hit) options.first_hit = *request.first_hit;
-  if (request.stats) options.profile = 1;
+  std::string culprits;
+  for (const Override& o : overrides) {
+    PrismRenderOptions alone = scene_options;
+    o.apply(alone);
+    if (prismCheckRenderOptions(&alone) != PRISM_OK) culprits += (culprits.empty() ? "" : ", ") + std::string(o.flags);
+  }
+  if (culprits.empty())
+    for (const Override& o : overrides) culprits += (culprits.empty() ? "" : ", ") + std::string(o.flags);
+  throw UsageError(culprits + ": " + reason);
 }
 
 // The sampling in words for the summary: "jitter, box filter", "quincunx (tent)", "adaptive".
@@ -208,6 +248,19 @@ int runRender(const std::vector<std::string>& args) {
                  "read back as +inf (depth) or -1 (primid); .exr keeps them");
   }
 
+  {
+    // The flags checked first against the default options, so that a mistake in
+    // them costs no scene loading; combinations with the scene's own values are
+    // checked again once it is read.
+    PrismScene raw_defaults = nullptr;
+    if (prismNewScene(&raw_defaults) != PRISM_OK) return failWithLastError();
+    const SceneHandle defaults(raw_defaults);
+    PrismRenderOptions default_options{};
+    default_options.struct_size = sizeof default_options;
+    if (prismGetRenderOptions(defaults.get(), &default_options) != PRISM_OK) return failWithLastError();
+    if (!applyOverrides(request, default_options)) return kExitFailure;
+  }
+
   PrismScene raw_scene = nullptr;
   // A .json file is a scene; anything else is a mesh file shown on its own.
   const bool is_scene = lowerExtension(request.scene_path) == ".json";
@@ -220,9 +273,8 @@ int runRender(const std::vector<std::string>& args) {
   PrismRenderOptions options{};
   options.struct_size = sizeof options;
   if (prismGetRenderOptions(scene.get(), &options) != PRISM_OK) return failWithLastError();
-  applyOverrides(request, options);
-  // Before the image is allocated (32768 x 32768 would take 16 GiB first).
-  if (prismCheckRenderOptions(&options) != PRISM_OK) return failWithLastError();
+  // Checked before the image is allocated (32768 x 32768 would take 16 GiB first).
+  if (!applyOverrides(request, options)) return kExitFailure;
   if (!applyCameraOverrides(request, scene.get())) return failWithLastError();
 
   PrismContextOptions context_options{};

@@ -14,7 +14,7 @@ void printWarning(const std::string& message) { std::fprintf(stderr, "prism: war
 
 // The library names the C function at fault ("prismRender: ..."); the command
 // line's user gave options, not calls, so that name is left out.
-int failWithLastError() {
+std::string lastErrorForUser() {
   const char* message = prismGetLastError();
   std::string text = message && *message ? message : "unknown failure (the library gave no message)";
   std::size_t end = 0;
@@ -23,7 +23,11 @@ int failWithLastError() {
     while (end < text.size() && std::isalnum(static_cast<unsigned char>(text[end]))) ++end;
     end = text.compare(end, 2, ": ") == 0 ? end + 2 : 0;
   }
-  printError(text.substr(end));
+  return text.substr(end);
+}
+
+int failWithLastError() {
+  printError(lastErrorForUser());
   return kExitFailure;
 }
 
