@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <string>
 
 #include "kernels/shared/ray_gpu.h"
@@ -58,50 +59,30 @@ std::string litMirrors(const std::string& lights) {
 
 }  // namespace
 
-TEST_CASE("a lit sphere's pixels equal the closed-form Phong and Blinn values", "[render][shading]") {
-  for (const char* model : {"phong", "blinn"}) {
+TEST_CASE("a lit sphere's pixels equal the closed-form Phong, Blinn and Cook-Torrance values", "[render][shading]") {
+  // Each variant replaces the material's "shininess" key; its highlight in closed form.
+  struct Variant {
+    const char* keys;
+    std::function<double(const Material&, const Vec3& n, const Vec3& l, const Vec3& v)> highlight;
+  };
+  auto power = [](double base, double n) { return base > 0 ? std::pow(base, n) : 0.0; };
+  auto cookTorrance = [](const Material& m, const Vec3& n, const Vec3& l, const Vec3& v) {
+    return referenceCookTorrance(n, l, v, m.roughness, static_cast<int>(m.distribution), m.ior);
+  };
+  const Variant variants[] = {
+      {R"("shininess": 20, "model": "phong")",  // (R·V)^n
+       [&](const Material& m, const Vec3& n, const Vec3& l, const Vec3& v) {
+         return power(dot(n * (2 * dot(n, l)) - l, v), m.shininess);
+       }},
+      {R"("shininess": 20, "model": "blinn")",  // (N·H)^n
+       [&](const Material& m, const Vec3& n, const Vec3& l, const Vec3& v) {
+         return power(dot(n, normalize(l + v)), m.shininess);
+       }},
+      {R"("model": "cook-torrance", "roughness": 0.25, "distribution": "beckmann")", cookTorrance},
+      {R"("model": "cook-torrance", "roughness": 0.25, "distribution": "ggx")", cookTorrance}};
+  for (const Variant& variant : variants) {
     std::string json = kLitSphere;
-    json.replace(json.find("\"shininess\": 20"), 15, std::string("\"shininess\": 20, \"model\": \"") + model + "\"");
-    Scene scene = parseScene(json, "lit_sphere.json");
-    RenderOptions opt = RenderOptions::fromScene(scene);
-    RenderResult r = renderScene(scene, opt);
-
-    const Material& m = scene.materials[1];
-    const Light& light = scene.lights[0];
-    int compared = 0;
-    for (int j = 0; j < opt.height; j += 3)
-      for (int i = 0; i < opt.width; i += 3) {
-        // Closed form: camera ray through the pixel centre, ray-sphere root,
-        // I = ka Ia + Il (kd N·L + ks (R·V)^n), or (N·H)^n for Blinn.
-        RefRay ray = referencePrimaryRay(scene, opt, i, j);
-        double b = dot(ray.o, ray.d), c = dot(ray.o, ray.o) - 1, disc = b * b - c;
-        if (disc < 0.01) continue;  // missed, or too near the silhouette to call
-        double t = -b - std::sqrt(disc);
-        Vec3 p = ray.o + ray.d * t, n = normalize(p), v = -ray.d;
-        Vec3 l = normalize(light.position - p);
-        Vec3 expected = mul(m.ambient, scene.render.ambient);
-        double n_dot_l = dot(n, l);
-        if (n_dot_l > 0) {
-          double base = std::string(model) == "blinn" ? dot(n, normalize(l + v)) : dot(n * (2 * n_dot_l) - l, v);
-          double spec = base > 0 ? std::pow(base, m.shininess) : 0;
-          expected = expected + mul(light.color * light.intensity, m.diffuse * n_dot_l + m.specular * spec);
-        }
-        INFO(model << " pixel (" << i << ", " << j << ")");
-        CHECK(maxDiff(pixel(r, i, j), expected) < 1e-3);
-        CHECK(r.primid[static_cast<size_t>(j) * opt.width + i] == 0);
-        CHECK(std::fabs(r.depth[static_cast<size_t>(j) * opt.width + i] - t) < 1e-4);
-        ++compared;
-      }
-    CHECK(compared > 50);
-  }
-}
-
-TEST_CASE("a lit sphere's pixels equal the closed-form Cook-Torrance values", "[render][shading]") {
-  for (const char* distribution : {"beckmann", "ggx"}) {
-    std::string json = kLitSphere;
-    json.replace(json.find("\"shininess\": 20"), 15,
-                 std::string("\"model\": \"cook-torrance\", \"roughness\": 0.25, \"distribution\": \"") +
-                     distribution + "\"");
+    json.replace(json.find("\"shininess\": 20"), 15, variant.keys);
     Scene scene = parseScene(json, "lit_sphere.json");
     RenderOptions opt = RenderOptions::fromScene(scene);
     RenderResult r = renderScene(scene, opt);
@@ -111,21 +92,25 @@ TEST_CASE("a lit sphere's pixels equal the closed-form Cook-Torrance values", "[
     int compared = 0, highlighted = 0;
     for (int j = 0; j < opt.height; j += 2)
       for (int i = 0; i < opt.width; i += 2) {
+        // Closed form: camera ray through the pixel centre, ray-sphere root,
+        // I = ka Ia + Il (kd N·L + ks highlight).
         RefRay ray = referencePrimaryRay(scene, opt, i, j);
         double b = dot(ray.o, ray.d), c = dot(ray.o, ray.o) - 1, disc = b * b - c;
-        if (disc < 0.01) continue;
+        if (disc < 0.01) continue;  // missed, or too near the silhouette to call
         double t = -b - std::sqrt(disc);
         Vec3 p = ray.o + ray.d * t, n = normalize(p), v = -ray.d;
         Vec3 l = normalize(light.position - p);
         Vec3 expected = mul(m.ambient, scene.render.ambient);
         double n_dot_l = dot(n, l);
         if (n_dot_l > 0) {
-          double spec = referenceCookTorrance(n, l, v, m.roughness, static_cast<int>(m.distribution), m.ior);
+          const double spec = variant.highlight(m, n, l, v);
           expected = expected + mul(light.color * light.intensity, m.diffuse * n_dot_l + m.specular * spec);
           highlighted += spec > 0.05;
         }
-        INFO(distribution << " pixel (" << i << ", " << j << ")");
+        INFO(variant.keys << ": pixel (" << i << ", " << j << ")");
         CHECK(maxDiff(pixel(r, i, j), expected) < 1e-3);
+        CHECK(r.primid[static_cast<size_t>(j) * opt.width + i] == 0);
+        CHECK(std::fabs(r.depth[static_cast<size_t>(j) * opt.width + i] - t) < 1e-4);
         ++compared;
       }
     CHECK(compared > 100);
