@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "api/api_boundary.h"
+#include "api/api_enums.h"
 #include "api/api_handles.h"
 #include "api/api_render.h"
 #include "device/device_list.h"
@@ -67,7 +68,7 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   r.max_depth = static_cast<int>(std::min<uint32_t>(o.max_depth, std::numeric_limits<int>::max()));
   r.min_weight = o.min_weight;
   r.seed = o.seed;
-  const char* accel = prismAccelName(static_cast<PrismAccel>(o.accel));
+  const char* accel = accelNameOf(o.accel);
   if (!accel) throw std::invalid_argument("render options: unknown accel value " + std::to_string(o.accel));
   r.accel = parseAccelKind(accel);
   // PrismAa is AaMode + 1, with 0 for the default (none at spp 1, jitter above).
@@ -76,7 +77,7 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   if (o.filter > PRISM_FILTER_MITCHELL)
     throw std::invalid_argument("render options: unknown filter value " + std::to_string(o.filter));
   r.filter = static_cast<FilterKind>(o.filter);
-  const char* first_hit = prismFirstHitName(static_cast<PrismFirstHit>(o.first_hit));
+  const char* first_hit = firstHitNameOf(o.first_hit);
   if (!first_hit)
     throw std::invalid_argument("render options: unknown first_hit value " + std::to_string(o.first_hit));
   r.first_hit = parseFirstHitMode(first_hit);
@@ -130,6 +131,20 @@ void fillStats(const RenderStats& from, double kernel_build_seconds, PrismRender
   stats->trace_seconds = from.seconds - from.setup_seconds;
 }
 
+bool aovChannelsOf(std::int64_t value, std::uint32_t* channels) {
+  switch (value) {
+    case PRISM_AOV_DEPTH:
+    case PRISM_AOV_PRIMID:
+      *channels = 1;
+      return true;
+    case PRISM_AOV_NORMAL:
+    case PRISM_AOV_ALBEDO:
+      *channels = 3;
+      return true;
+  }
+  return false;
+}
+
 unsigned long long nextSceneRevision() {
   static std::atomic<unsigned long long> next{1};
   return next.fetch_add(1, std::memory_order_relaxed);
@@ -146,7 +161,7 @@ PRISM_API const char* prismGetVersionString(void) { return PRISM_VERSION_STRING;
 PRISM_API const char* prismGetLastError(void) { return lastError(); }
 
 PRISM_API const char* prismStatusName(PrismStatus status) {
-  switch (status) {
+  switch (enumValue(status)) {
     case PRISM_OK: return "PRISM_OK";
     case PRISM_ERROR_INVALID_ARGUMENT: return "PRISM_ERROR_INVALID_ARGUMENT";
     case PRISM_ERROR_IO: return "PRISM_ERROR_IO";
@@ -318,17 +333,8 @@ PRISM_API PrismStatus prismGetKernelTime(PrismContext context, uint32_t index, c
 
 PRISM_API PrismStatus prismGetAovChannels(PrismAov aov, uint32_t* channels) {
   PRISM_REQUIRE(channels, "prismGetAovChannels: channels is NULL");
-  switch (aov) {
-    case PRISM_AOV_DEPTH:
-    case PRISM_AOV_PRIMID:
-      *channels = 1;
-      return PRISM_OK;
-    case PRISM_AOV_NORMAL:
-    case PRISM_AOV_ALBEDO:
-      *channels = 3;
-      return PRISM_OK;
-  }
-  return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetAovChannels: unknown AOV " + std::to_string(aov));
+  if (aovChannelsOf(enumValue(aov), channels)) return PRISM_OK;
+  return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetAovChannels: unknown AOV " + std::to_string(enumValue(aov)));
 }
 
 PRISM_API PrismStatus prismParseAov(const char* name, PrismAov* aov) {
@@ -350,13 +356,14 @@ PRISM_API PrismStatus prismParseAov(const char* name, PrismAov* aov) {
 PRISM_API PrismStatus prismGetAov(PrismContext context, PrismAov aov, float* out, size_t count) {
   PRISM_REQUIRE(context && out, "prismGetAov: NULL argument");
   if (!context->has_render) return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetAov: nothing has been rendered yet");
+  const int which = enumValue(aov);
   uint32_t channels = 0;
-  if (PrismStatus s = prismGetAovChannels(aov, &channels); s != PRISM_OK) return s;
+  PRISM_REQUIRE(aovChannelsOf(which, &channels), "prismGetAov: unknown AOV " + std::to_string(which));
   const RenderResult& r = context->last;
   size_t needed = static_cast<size_t>(r.width) * r.height * channels;
   PRISM_REQUIRE(count >= needed, "prismGetAov: buffer holds " + std::to_string(count) + " floats, the AOV needs " +
                                      std::to_string(needed));
-  switch (aov) {
+  switch (which) {
     case PRISM_AOV_DEPTH: std::memcpy(out, r.depth.data(), needed * sizeof(float)); break;
     case PRISM_AOV_NORMAL: std::memcpy(out, r.normal.data(), needed * sizeof(float)); break;
     case PRISM_AOV_ALBEDO: std::memcpy(out, r.albedo.data(), needed * sizeof(float)); break;

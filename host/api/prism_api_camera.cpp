@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "api/api_boundary.h"
+#include "api/api_enums.h"
 #include "api/api_handles.h"
 #include "scene/scene_loader.h"
 
@@ -27,6 +28,12 @@ void put(float* dst, const Vec3& v) {
 }
 
 }  // namespace
+
+const char* accelNameOf(std::int64_t value) {
+  for (const AccelName& entry : kAccelNames)
+    if (static_cast<std::int64_t>(entry.accel) == value) return entry.name;
+  return nullptr;
+}
 
 extern "C" {
 
@@ -90,10 +97,6 @@ PRISM_API PrismStatus prismParseAccel(const char* name, PrismAccel* accel) {
               std::string("unknown acceleration structure '") + name + "' (expected auto, bvh, octree, bsp or none)");
 }
 
-PRISM_API const char* prismAccelName(PrismAccel accel) {
-  for (const AccelName& entry : kAccelNames)
-    if (entry.accel == accel) return entry.name;
-  return nullptr;
-}
+PRISM_API const char* prismAccelName(PrismAccel accel) { return accelNameOf(enumValue(accel)); }
 
 }  // extern "C"

@@ -2,6 +2,7 @@
 #include <cstring>
 
 #include "api/api_boundary.h"
+#include "api/api_enums.h"
 #include "api/api_handles.h"
 #include "render/gpu_scene.h"
 
@@ -12,8 +13,8 @@ static_assert(sizeof(PrismHit) == sizeof(HitGpu), "PrismHit and HitGpu are the s
 
 namespace {
 
-RayQueryEngine& engineFor(PrismContext context, PrismScene scene, PrismAccel accel) {
-  const char* name = prismAccelName(accel);
+RayQueryEngine& engineFor(PrismContext context, PrismScene scene, int accel) {
+  const char* name = accelNameOf(accel);
   if (!name) throw std::invalid_argument("unknown accel value " + std::to_string(accel));
   AccelKind kind = parseAccelKind(name);
   if (!context->queries || context->queries_revision != scene->revision || context->queries_accel != kind) {
@@ -44,7 +45,7 @@ PRISM_API PrismStatus prismIntersect(PrismContext context, PrismScene scene, Pri
   return guarded(__func__, [&] {
     double seconds = 0;
     if (count) {
-      std::vector<HitGpu> result = engineFor(context, scene, accel).intersect(copyRays(rays, count), &seconds);
+      std::vector<HitGpu> result = engineFor(context, scene, enumValue(accel)).intersect(copyRays(rays, count), &seconds);
       std::memcpy(hits, result.data(), count * sizeof(PrismHit));
     }
     if (trace_seconds) *trace_seconds = seconds;
@@ -59,7 +60,7 @@ PRISM_API PrismStatus prismOccluded(PrismContext context, PrismScene scene, Pris
   return guarded(__func__, [&] {
     double seconds = 0;
     if (count) {
-      std::vector<std::uint8_t> result = engineFor(context, scene, accel).occluded(copyRays(rays, count), &seconds);
+      std::vector<std::uint8_t> result = engineFor(context, scene, enumValue(accel)).occluded(copyRays(rays, count), &seconds);
       std::memcpy(occluded, result.data(), count);
     }
     if (trace_seconds) *trace_seconds = seconds;

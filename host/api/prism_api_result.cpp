@@ -4,6 +4,7 @@
 #include <string>
 
 #include "api/api_boundary.h"
+#include "api/api_enums.h"
 #include "api/api_render.h"
 
 using namespace prism;
@@ -55,10 +56,11 @@ PRISM_API PrismStatus prismGetResultImage(PrismResult result, const float** rgba
 
 PRISM_API PrismStatus prismGetResultAov(PrismResult result, PrismAov aov, const float** data, uint32_t* channels) {
   PRISM_REQUIRE(result && data && channels, "prismGetResultAov: NULL argument");
-  if (prismGetAovChannels(aov, channels) != PRISM_OK)
-    return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetResultAov: unknown AOV " + std::to_string(aov));
+  const int which = enumValue(aov);
+  if (!aovChannelsOf(which, channels))
+    return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetResultAov: unknown AOV " + std::to_string(which));
   const RenderResult& r = result->result;
-  switch (aov) {
+  switch (which) {
     case PRISM_AOV_DEPTH: *data = r.depth.data(); break;
     case PRISM_AOV_NORMAL: *data = r.normal.data(); break;
     case PRISM_AOV_ALBEDO: *data = r.albedo.data(); break;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "api/api_boundary.h"
+#include "api/api_enums.h"
 #include "prism.h"
 
 using namespace prism;
@@ -42,29 +43,33 @@ PrismStatus parse(const Named<E> (&table)[N], const char* function, const char* 
 }
 
 template <typename E, size_t N>
-const char* nameOf(const Named<E> (&table)[N], E value) {
+const char* nameOf(const Named<E> (&table)[N], std::int64_t value) {
   for (const Named<E>& entry : table)
-    if (entry.value == value) return entry.name;
+    if (static_cast<std::int64_t>(entry.value) == value) return entry.name;
   return nullptr;
 }
 
 }  // namespace
+
+const char* aaNameOf(std::int64_t value) { return nameOf(kAaNames, value); }
+const char* filterNameOf(std::int64_t value) { return nameOf(kFilterNames, value); }
+const char* firstHitNameOf(std::int64_t value) { return nameOf(kFirstHitNames, value); }
 
 extern "C" {
 
 PRISM_API PrismStatus prismParseAa(const char* name, PrismAa* aa) {
   return parse(kAaNames, "prismParseAa", "anti-aliasing mode", name, aa);
 }
-PRISM_API const char* prismAaName(PrismAa aa) { return nameOf(kAaNames, aa); }
+PRISM_API const char* prismAaName(PrismAa aa) { return aaNameOf(enumValue(aa)); }
 
 PRISM_API PrismStatus prismParseFilter(const char* name, PrismFilter* filter) {
   return parse(kFilterNames, "prismParseFilter", "filter", name, filter);
 }
-PRISM_API const char* prismFilterName(PrismFilter filter) { return nameOf(kFilterNames, filter); }
+PRISM_API const char* prismFilterName(PrismFilter filter) { return filterNameOf(enumValue(filter)); }
 
 PRISM_API PrismStatus prismParseFirstHit(const char* name, PrismFirstHit* first_hit) {
   return parse(kFirstHitNames, "prismParseFirstHit", "first-hit mode", name, first_hit);
 }
-PRISM_API const char* prismFirstHitName(PrismFirstHit first_hit) { return nameOf(kFirstHitNames, first_hit); }
+PRISM_API const char* prismFirstHitName(PrismFirstHit first_hit) { return firstHitNameOf(enumValue(first_hit)); }
 
 }  // extern "C"

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "api/api_boundary.h"
+#include "api/api_enums.h"
 #include "api/api_handles.h"
 #include "scene/scene_loader.h"
 
@@ -152,7 +153,7 @@ PRISM_API void prismDefaultObject(PrismObject* object, PrismObjectType type) {
   if (!object) return;
   *object = PrismObject{};
   object->struct_size = sizeof(PrismObject);
-  object->type = type;
+  object->type = static_cast<uint32_t>(enumValue(type));
   object->radius = 1;
   for (int k = 0; k < 3; ++k) object->box_min[k] = -1, object->box_max[k] = 1;
   object->normal[1] = 1;
@@ -188,7 +189,7 @@ PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* 
   PRISM_REQUIRE(scene && light, "prismAddAreaLight: NULL argument");
   PRISM_REQUIRE(light->struct_size >= sizeof(PrismAreaLight), "prismAddAreaLight: struct_size is too small");
   Json j{{"color", triple(light->color)}, {"intensity", light->intensity}, {"samples", light->samples}};
-  switch (light->type) {
+  switch (enumValue(light->type)) {
     case PRISM_LIGHT_QUAD:
       j.update(Json{{"type", "quad"}, {"corner", triple(light->corner)}, {"edge1", triple(light->edge1)},
                     {"edge2", triple(light->edge2)}});
