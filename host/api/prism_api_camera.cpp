@@ -5,6 +5,7 @@
 
 #include "api/api_boundary.h"
 #include "api/api_enums.h"
+#include "api/api_fragments.h"
 #include "api/api_handles.h"
 #include "scene/scene_loader.h"
 
@@ -20,12 +21,6 @@ const AccelName kAccelNames[] = {
     {"bvh", PRISM_ACCEL_BVH},   {"octree", PRISM_ACCEL_OCTREE}, {"bsp", PRISM_ACCEL_BSP},
     {"none", PRISM_ACCEL_NONE}, {"auto", PRISM_ACCEL_AUTO}};
 
-nlohmann::json triple(const float* v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
-void put(float* dst, const Vec3& v) {
-  dst[0] = static_cast<float>(v.x);
-  dst[1] = static_cast<float>(v.y);
-  dst[2] = static_cast<float>(v.z);
-}
 
 }  // namespace
 
@@ -41,17 +36,17 @@ PRISM_API PrismStatus prismGetCamera(PrismScene scene, PrismCamera* camera) {
   if (!scene || !camera) return fail(PRISM_ERROR_INVALID_ARGUMENT, "prismGetCamera: NULL argument");
   const Camera& c = scene->scene.camera;
   camera->struct_size = sizeof(PrismCamera);
-  put(camera->position, c.position);
-  put(camera->look_at, c.look_at);
-  put(camera->up, c.up);
+  putVec3(camera->position, c.position);
+  putVec3(camera->look_at, c.look_at);
+  putVec3(camera->up, c.up);
   camera->fov_degrees = static_cast<float>(c.fov);
   camera->aperture = static_cast<float>(c.aperture);
   camera->focus_distance = static_cast<float>(c.focus_distance);
   camera->shutter_open = static_cast<float>(c.shutter_open);
   camera->shutter_close = static_cast<float>(c.shutter_close);
   camera->moving = c.moving ? 1 : 0;
-  put(camera->position_end, c.moving ? c.position_end : c.position);
-  put(camera->look_at_end, c.moving ? c.look_at_end : c.look_at);
+  putVec3(camera->position_end, c.moving ? c.position_end : c.position);
+  putVec3(camera->look_at_end, c.moving ? c.look_at_end : c.look_at);
   return PRISM_OK;
 }
 
@@ -64,23 +59,19 @@ PRISM_API PrismStatus prismSetCamera(PrismScene scene, const PrismCamera* camera
     // scene whose camera starts from the defaults: every field is replaced, and
     // the rules and messages are the file's. A focus distance of 0 (to look_at)
     // and a camera that does not move are what a file says by leaving keys out.
-    nlohmann::json c{{"position", triple(camera->position)},
-                     {"look_at", triple(camera->look_at)},
-                     {"up", triple(camera->up)},
+    nlohmann::json c{{"position", jsonTriple(camera->position)},
+                     {"look_at", jsonTriple(camera->look_at)},
+                     {"up", jsonTriple(camera->up)},
                      {"fov", camera->fov_degrees},
                      {"aperture", camera->aperture},
                      {"shutter", nlohmann::json::array({camera->shutter_open, camera->shutter_close})}};
     if (camera->focus_distance != 0) c["focus_distance"] = camera->focus_distance;
     if (camera->moving) {
-      c["position_end"] = triple(camera->position_end);
-      c["look_at_end"] = triple(camera->look_at_end);
+      c["position_end"] = jsonTriple(camera->position_end);
+      c["look_at_end"] = jsonTriple(camera->look_at_end);
     }
     Scene scratch;
-    try {
-      addSceneFragment(scratch, nlohmann::json{{"camera", c}}, "", "");
-    } catch (const SceneError& e) {
-      throw std::invalid_argument(e.what());
-    }
+    addCallFragment(scratch, nlohmann::json{{"camera", c}});
     scene->scene.camera = scratch.camera;
     return PRISM_OK;
   });

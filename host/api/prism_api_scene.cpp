@@ -8,18 +8,27 @@
 
 #include "api/api_boundary.h"
 #include "api/api_enums.h"
+#include "api/api_fragments.h"
 #include "api/api_handles.h"
 #include "scene/scene_loader.h"
 
 using namespace prism;
 using Json = nlohmann::json;
 
+void prism::addCallFragment(Scene& scene, const Json& fragment) {
+  try {
+    addSceneFragment(scene, fragment, "", "");
+  } catch (const SceneIoError&) {
+    throw;
+  } catch (const SceneError& e) {
+    throw std::invalid_argument(e.what());
+  }
+}
+
 namespace {
 
 #define PRISM_REQUIRE(cond, message) \
   if (!(cond)) return fail(PRISM_ERROR_INVALID_ARGUMENT, message)
-
-Json triple(const float* v) { return Json::array({v[0], v[1], v[2]}); }
 
 Json matrix(const float* m) {
   Json a = Json::array();
@@ -27,17 +36,7 @@ Json matrix(const float* m) {
   return Json{{"matrix", a}};
 }
 
-// A typed call's fragment, checked by the loader; a refused value is the
-// caller's argument, not a malformed document.
-void addChecked(PrismScene scene, const Json& fragment) {
-  try {
-    addSceneFragment(scene->scene, fragment, "", "");
-  } catch (const SceneIoError&) {
-    throw;
-  } catch (const SceneError& e) {
-    throw std::invalid_argument(e.what());
-  }
-}
+void addChecked(PrismScene scene, const Json& fragment) { addCallFragment(scene->scene, fragment); }
 
 const char* modelName(uint32_t model) {
   switch (model) {
@@ -50,9 +49,9 @@ const char* modelName(uint32_t model) {
 
 Json materialJson(const PrismMaterial& m) {
   Json j{{"model", modelName(m.model)},
-         {"ambient", triple(m.ambient)},
-         {"diffuse", triple(m.diffuse)},
-         {"specular", triple(m.specular)},
+         {"ambient", jsonTriple(m.ambient)},
+         {"diffuse", jsonTriple(m.diffuse)},
+         {"specular", jsonTriple(m.specular)},
          {"shininess", m.shininess},
          {"reflect", m.reflect},
          {"transmit", m.transmit},
@@ -65,8 +64,8 @@ Json materialJson(const PrismMaterial& m) {
   }
   if (m.checker)
     j["texture"] = Json{{"type", "checker"},
-                        {"color1", triple(m.checker_color1)},
-                        {"color2", triple(m.checker_color2)},
+                        {"color1", jsonTriple(m.checker_color1)},
+                        {"color2", jsonTriple(m.checker_color2)},
                         {"scale", m.checker_scale}};
   return j;
 }
@@ -75,17 +74,17 @@ Json objectJson(const PrismObject& o) {
   Json j;
   switch (o.type) {
     case PRISM_OBJECT_SPHERE:
-      j = Json{{"type", "sphere"}, {"center", triple(o.center)}, {"radius", o.radius}};
+      j = Json{{"type", "sphere"}, {"center", jsonTriple(o.center)}, {"radius", o.radius}};
       break;
     case PRISM_OBJECT_BOX:
-      j = Json{{"type", "box"}, {"min", triple(o.box_min)}, {"max", triple(o.box_max)}};
+      j = Json{{"type", "box"}, {"min", jsonTriple(o.box_min)}, {"max", jsonTriple(o.box_max)}};
       break;
     case PRISM_OBJECT_PLANE:
-      j = Json{{"type", "plane"}, {"point", triple(o.point)}, {"normal", triple(o.normal)}};
+      j = Json{{"type", "plane"}, {"point", jsonTriple(o.point)}, {"normal", jsonTriple(o.normal)}};
       break;
     case PRISM_OBJECT_TRIANGLE:
       j = Json{{"type", "triangle"},
-               {"vertices", Json::array({triple(o.vertices), triple(o.vertices + 3), triple(o.vertices + 6)})}};
+               {"vertices", Json::array({jsonTriple(o.vertices), jsonTriple(o.vertices + 3), jsonTriple(o.vertices + 6)})}};
       break;
   }
   if (o.material) j["material"] = o.material;
@@ -113,12 +112,9 @@ PRISM_API void prismDefaultMaterial(PrismMaterial* material) {
   *material = PrismMaterial{};
   material->struct_size = sizeof(PrismMaterial);
   material->model = d.model == ShadingModel::Blinn ? PRISM_SHADING_BLINN : PRISM_SHADING_PHONG;
-  auto put = [](float* out, const Vec3& v) {
-    out[0] = static_cast<float>(v.x), out[1] = static_cast<float>(v.y), out[2] = static_cast<float>(v.z);
-  };
-  put(material->ambient, d.ambient);
-  put(material->diffuse, d.diffuse);
-  put(material->specular, d.specular);
+  putVec3(material->ambient, d.ambient);
+  putVec3(material->diffuse, d.diffuse);
+  putVec3(material->specular, d.specular);
   material->shininess = static_cast<float>(d.shininess);
   material->reflect = static_cast<float>(d.reflect);
   material->transmit = static_cast<float>(d.transmit);
@@ -128,8 +124,8 @@ PRISM_API void prismDefaultMaterial(PrismMaterial* material) {
   material->roughness = static_cast<float>(d.roughness);
   material->distribution = static_cast<uint32_t>(d.distribution);
   const Texture t;
-  put(material->checker_color1, t.color1);
-  put(material->checker_color2, t.color2);
+  putVec3(material->checker_color1, t.color1);
+  putVec3(material->checker_color2, t.color2);
   material->checker_scale = static_cast<float>(t.scale);
 }
 
@@ -178,8 +174,8 @@ PRISM_API PrismStatus prismAddPointLight(PrismScene scene, const float position[
   PRISM_REQUIRE(scene && position && color, "prismAddPointLight: NULL argument");
   return guarded(__func__, [&] {
     addChecked(scene, Json{{"lights", Json::array({Json{{"type", "point"},
-                                                         {"position", triple(position)},
-                                                         {"color", triple(color)},
+                                                         {"position", jsonTriple(position)},
+                                                         {"color", jsonTriple(color)},
                                                          {"intensity", intensity}}})}});
     return PRISM_OK;
   });
@@ -188,18 +184,18 @@ PRISM_API PrismStatus prismAddPointLight(PrismScene scene, const float position[
 PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* light) {
   PRISM_REQUIRE(scene && light, "prismAddAreaLight: NULL argument");
   PRISM_REQUIRE(light->struct_size >= sizeof(PrismAreaLight), "prismAddAreaLight: struct_size is too small");
-  Json j{{"color", triple(light->color)}, {"intensity", light->intensity}, {"samples", light->samples}};
+  Json j{{"color", jsonTriple(light->color)}, {"intensity", light->intensity}, {"samples", light->samples}};
   switch (enumValue(light->type)) {
     case PRISM_LIGHT_QUAD:
-      j.update(Json{{"type", "quad"}, {"corner", triple(light->corner)}, {"edge1", triple(light->edge1)},
-                    {"edge2", triple(light->edge2)}});
+      j.update(Json{{"type", "quad"}, {"corner", jsonTriple(light->corner)}, {"edge1", jsonTriple(light->edge1)},
+                    {"edge2", jsonTriple(light->edge2)}});
       break;
     case PRISM_LIGHT_DISK:
-      j.update(Json{{"type", "disk"}, {"center", triple(light->center)}, {"normal", triple(light->normal)},
+      j.update(Json{{"type", "disk"}, {"center", jsonTriple(light->center)}, {"normal", jsonTriple(light->normal)},
                     {"radius", light->radius}});
       break;
     case PRISM_LIGHT_SPHERE:
-      j.update(Json{{"type", "sphere"}, {"center", triple(light->center)}, {"radius", light->radius}});
+      j.update(Json{{"type", "sphere"}, {"center", jsonTriple(light->center)}, {"radius", light->radius}});
       break;
     default:
       return fail(PRISM_ERROR_INVALID_ARGUMENT,
@@ -214,7 +210,7 @@ PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* 
 PRISM_API PrismStatus prismSetBackground(PrismScene scene, const float color[3]) {
   PRISM_REQUIRE(scene && color, "prismSetBackground: NULL argument");
   return guarded(__func__, [&] {
-    addChecked(scene, Json{{"render", Json{{"background", triple(color)}}}});
+    addChecked(scene, Json{{"render", Json{{"background", jsonTriple(color)}}}});
     return PRISM_OK;
   });
 }
@@ -222,7 +218,7 @@ PRISM_API PrismStatus prismSetBackground(PrismScene scene, const float color[3])
 PRISM_API PrismStatus prismSetAmbient(PrismScene scene, const float color[3]) {
   PRISM_REQUIRE(scene && color, "prismSetAmbient: NULL argument");
   return guarded(__func__, [&] {
-    addChecked(scene, Json{{"render", Json{{"ambient", triple(color)}}}});
+    addChecked(scene, Json{{"render", Json{{"ambient", jsonTriple(color)}}}});
     return PRISM_OK;
   });
 }
