@@ -114,7 +114,7 @@ std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<Object
     accel->stats.unbounded = prims.unbounded.size();
   }
   // Moving objects' code is compiled only into the programs of scenes that have some.
-  if (primitiveCount(objects) < objects.size()) accel->kernel_options += " " + std::string(kMotionKernelOption);
+  if (anyMoving(objects)) accel->kernel_options += " " + std::string(kMotionKernelOption);
   accel->stats.bytes = accel->nodes.size() * sizeof(AccelWord) + accel->packets.size() * sizeof(TriPacketGpu) +
                        accel->unbounded.size() * sizeof(std::int32_t);
   accel->stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

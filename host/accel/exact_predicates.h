@@ -1,13 +1,8 @@
-// Whether a primitive meets a closed cell, decided exactly with CGAL's
-// predicates (Exact_predicates_inexact_constructions_kernel), so that no
-// primitive is lost or wrongly kept at a cell boundary:
-//   triangles: do_intersect(Triangle_3, Iso_cuboid_3), or the segment / point a
-//     degenerate triangle collapses to;
-//   untransformed spheres: do_intersect(Sphere_3, Iso_cuboid_3), the squared
-//     distance from the centre to the box against r^2 (the ball, so a sphere
-//     enclosing a cell is kept: conservative for its surface);
-//   untransformed boxes: interval overlap on each axis;
-//   transformed objects and anything else: their (padded) world box, overlap.
+// Whether a primitive meets a closed cell, decided by its kind
+// (scene/primitives/): exactly with CGAL's predicates where the kind has an
+// exact test (triangles, untransformed spheres), so that no primitive is lost
+// or wrongly kept at a cell boundary; by interval overlap for boxes; by the
+// (padded) world box for transformed objects and kinds without a test.
 // A primitive touching the cell only on its boundary counts as meeting it.
 #pragma once
 

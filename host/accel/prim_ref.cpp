@@ -6,44 +6,15 @@
 
 #include "kernels/shared/motion_gpu.h"
 #include "scene/motion.h"
+#include "scene/primitives/primitive_kind.h"
 
 namespace prism {
 namespace {
 
-bool finite3(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
-
-// Object-space box of the shape (the stored parameters), in double.
+// Object-space box of the shape (the stored parameters), in double, by its kind.
 bool localBounds(const ObjectGpu& ob, double lo[3], double hi[3]) {
-  const float* p = ob.p;
-  switch (ob.type) {
-    case OBJECT_SPHERE: {
-      if (!finite3(p) || !std::isfinite(p[3])) return false;
-      double r = std::fabs(double(p[3]));
-      for (int a = 0; a < 3; ++a) {
-        lo[a] = double(p[a]) - r;
-        hi[a] = double(p[a]) + r;
-      }
-      return true;
-    }
-    case OBJECT_BOX:
-      if (!finite3(p) || !finite3(p + 3)) return false;
-      // box_intersect is symmetric in its two corners, so an inverted box is the
-      // box the corners span.
-      for (int a = 0; a < 3; ++a) {
-        lo[a] = std::min(p[a], p[3 + a]);
-        hi[a] = std::max(p[a], p[3 + a]);
-      }
-      return true;
-    case OBJECT_TRIANGLE:
-      if (!finite3(p) || !finite3(p + 3) || !finite3(p + 6)) return false;
-      for (int a = 0; a < 3; ++a) {
-        lo[a] = std::min({p[a], p[3 + a], p[6 + a]});
-        hi[a] = std::max({p[a], p[3 + a], p[6 + a]});
-      }
-      return true;
-    default:
-      return false;  // planes, unknown types
-  }
+  const PrimitiveKind* kind = primitiveKindOfGpu(ob.type);
+  return kind && kind->local_bounds(ob, objectSideData(ob), lo, hi);
 }
 
 // Inverse of the 3x4 world-to-object matrix in double: object-to-world.
@@ -216,21 +187,9 @@ bool movingBounds(const ObjectGpu& ob, Aabb* swept, Aabb* open, Aabb* close);
 
 }  // namespace
 
-float roundDown(double x) {
-  float f = static_cast<float>(x);
-  if (double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-  return f;
-}
-
-float roundUp(double x) {
-  float f = static_cast<float>(x);
-  if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  return f;
-}
-
 bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
   double lo[3], hi[3];
-  if (ob.type == OBJECT_PLANE || !localBounds(ob, lo, hi)) return false;
+  if (!localBounds(ob, lo, hi)) return false;
   if (ob.has_transform == OBJECT_MOVING) {
     return movingBounds(ob, bounds, nullptr, nullptr);
   } else if (ob.has_transform) {
@@ -303,8 +262,8 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
   PrimitiveSet set;
   set.bounded.reserve(objects.size());
   set.bounds.reserve(objects.size());
-  for (std::size_t i = 0; i < objects.size(); ++i) {
-    if (objects[i].type == OBJECT_MOTION) continue;  // a moving object's record, not a primitive
+  const std::size_t count = primitiveCount(objects);
+  for (std::size_t i = 0; i < count; ++i) {
     const ObjectGpu& ob = objects[i];
     const bool moves = ob.has_transform == OBJECT_MOVING;
     Aabb b, open, close;
@@ -331,9 +290,16 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
 }
 
 std::size_t primitiveCount(const std::vector<ObjectGpu>& objects) {
-  std::size_t n = objects.size();
-  while (n > 0 && objects[n - 1].type == OBJECT_MOTION) --n;
+  std::size_t n = 0;
+  while (n < objects.size() && objects[n].type != OBJECT_MOTION && objects[n].type != OBJECT_DATA) ++n;
   return n;
+}
+
+bool anyMoving(const std::vector<ObjectGpu>& objects) {
+  const std::size_t count = primitiveCount(objects);
+  for (std::size_t i = 0; i < count; ++i)
+    if (objects[i].has_transform == OBJECT_MOVING) return true;
+  return false;
 }
 
 }  // namespace prism

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "kernels/shared/motion_gpu.h"
 #include "scene/motion.h"
+#include "scene/primitives/primitive_kind.h"
 
 namespace prism {
 namespace {
@@ -26,34 +29,35 @@ void put4(float* dst, const Vec3& v, double w = 0) {
   dst[3] = static_cast<float>(w);
 }
 
-ObjectGpu flattenObject(const Object& ob) {
+// An analytic object's record, by its kind; parameters that do not fit the
+// record go to `side`.
+ObjectGpu flattenObject(const Object& ob, std::vector<float>& side) {
+  const PrimitiveKind& kind = primitiveKind(ob.type);
   ObjectGpu g{};
-  g.type = static_cast<int>(ob.type);
+  g.type = kind.gpu_type;
   g.material = ob.material;
-  switch (ob.type) {
-    case ObjectType::Sphere:
-      put3(g.p, ob.center);
-      g.p[3] = static_cast<float>(ob.radius);
-      break;
-    case ObjectType::Box:
-      put3(g.p, ob.box_min);
-      put3(g.p + 3, ob.box_max);
-      break;
-    case ObjectType::Plane:
-      put3(g.p, ob.point);
-      put3(g.p + 3, normalize(ob.normal));
-      break;
-    case ObjectType::Triangle:
-      for (int i = 0; i < 3; ++i) put3(g.p + 3 * i, ob.vertices[i]);
-      break;
-    case ObjectType::Mesh:
-      break;  // flattened triangle by triangle in appendMesh
-  }
+  kind.flatten(ob, g, side);
   g.has_transform = ob.transform.isIdentity() ? 0 : 1;
   Transform inv = g.has_transform ? ob.transform.inverse() : Transform::identity();
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c) g.world_to_object[4 * r + c] = static_cast<float>(inv.m[r][c]);
   return g;
+}
+
+// Appends side data as a data record (and the records its floats run on
+// into); returns the first record's index.
+std::size_t appendSideData(const std::vector<float>& side, std::vector<ObjectGpu>& out) {
+  const std::size_t first = out.size();
+  constexpr std::size_t kHeader = offsetof(ObjectDataGpu, words) / sizeof(float);
+  constexpr std::size_t kSlot = sizeof(ObjectGpu) / sizeof(float);
+  const std::size_t records = (kHeader + side.size() + kSlot - 1) / kSlot;
+  out.resize(first + records, ObjectGpu{});
+  ObjectDataGpu header{};
+  header.type = OBJECT_DATA;
+  header.size = static_cast<int>(side.size());
+  std::memcpy(&out[first], &header, offsetof(ObjectDataGpu, words));
+  std::memcpy(reinterpret_cast<float*>(&out[first]) + kHeader, side.data(), side.size() * sizeof(float));
+  return first;
 }
 
 Vec3 vertexAt(const std::vector<float>& xyz, std::uint32_t i) { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
@@ -220,13 +224,17 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   std::size_t total = 0;
   for (const Object& ob : scene.objects) total += ob.type == ObjectType::Mesh ? ob.mesh->triangleCount() : 1;
   g.objects.reserve(total);
+  std::vector<std::pair<std::size_t, std::vector<float>>> sides;  // (primitive, its side data)
   for (const Object& ob : scene.objects) {
     const bool moves = shutter && ob.moving;
     const std::size_t first = g.objects.size();
-    if (ob.type == ObjectType::Mesh)
+    if (ob.type == ObjectType::Mesh) {
       appendMesh(ob, g.objects, moves);
-    else
-      g.objects.push_back(flattenObject(ob));
+    } else {
+      std::vector<float> side;
+      g.objects.push_back(flattenObject(ob, side));
+      if (!side.empty()) sides.emplace_back(first, std::move(side));
+    }
     if (!moves) continue;
     for (std::size_t i = first; i < g.objects.size(); ++i) moving.emplace_back(i, motions.size());
     motions.push_back(flattenMotion(ob.transform, ob.transform_end, scene.camera));
@@ -245,6 +253,12 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
     ObjectGpu slot;
     std::memcpy(&slot, &m, sizeof slot);
     g.objects.push_back(slot);
+  }
+  for (const auto& [i, side] : sides) {
+    const std::size_t record = appendSideData(side, g.objects);
+    if (record - i > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      throw std::invalid_argument("scene too large: side data beyond 2^31 records of its primitive");
+    setSideDataOffset(g.objects[i], static_cast<int>(record - i));
   }
   g.primitive_count = primitives;
   for (const Material& m : scene.materials) g.materials.push_back(flattenMaterial(m));

@@ -15,7 +15,8 @@ namespace prism {
 
 struct GpuScene {
   // Every primitive (the index is its primid), then the motion records of the
-  // moving ones (kernels/shared/motion_gpu.h), which are not primitives.
+  // moving ones (kernels/shared/motion_gpu.h) and the data records of kinds
+  // with side data (ObjectDataGpu), which are not primitives.
   std::vector<ObjectGpu> objects;
   std::size_t primitive_count = 0;
   std::vector<MaterialGpu> materials;

@@ -16,8 +16,9 @@
 #include "mesh/mesh_error.h"
 #include "scene/sampling_options.h"
 #include "scene/camera_check.h"
+#include "scene/json_reader.h"
 #include "scene/light_check.h"
-#include "scene/object_check.h"
+#include "scene/primitives/primitive_kind.h"
 #include "scene/mesh_objects.h"
 #include <string>
 #include <unordered_map>
@@ -33,8 +34,6 @@ namespace {
 // so an object of n keys parses in O(n^2) (160,000 materials: 21 s). Plain json
 // sorts its keys instead; the one order that matters, the materials' (it fixes
 // their indices), is recorded while parsing (ParsedJson).
-using Json = nlohmann::json;
-
 struct ParsedJson {
   Json root;
   std::vector<std::string> material_order;  // the keys of the top-level "materials", first occurrences
@@ -46,75 +45,10 @@ constexpr int kMaxDepth = 31;
 constexpr double kMaxColour = 1e6;     // see colour()
 constexpr double kMaxExponent = 1e6;   // shininess: pow_positive is checked up to it (tests/kernels/math_test.cpp)
 
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
-
-std::string formatNumber(double x) {
-  if (!std::isfinite(x)) return std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
-  if (x == std::floor(x) && std::fabs(x) < 1e15) return std::to_string(static_cast<long long>(x));
-  return Json(x).dump();  // shortest round-trip form
-}
-
-std::string formatVec(const Vec3& v) {
-  return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
-}
-
-// A short, printable rendering of any value for "got ..."; bounded so a huge or
-// deeply nested input cannot produce a huge message (or recurse deeply).
-std::string describe(const Json& v, int depth = 0) {
-  switch (v.type()) {
-    case Json::value_t::null:
-      return "null";
-    case Json::value_t::boolean:
-      return v.get<bool>() ? "true" : "false";
-    case Json::value_t::number_integer:
-      return std::to_string(v.get<long long>());
-    case Json::value_t::number_unsigned:
-      return std::to_string(v.get<unsigned long long>());
-    case Json::value_t::number_float:
-      return formatNumber(v.get<double>());
-    case Json::value_t::string: {
-      std::string s = v.get<std::string>();
-      const bool cut = s.size() > 40;
-      if (cut) s.resize(40);
-      return Json(s).dump(-1, ' ', false, Json::error_handler_t::replace) + (cut ? "..." : "");
-    }
-    case Json::value_t::array: {
-      if (v.size() > 16 || depth >= 2) {
-        if (depth > 0) return "[...]";
-        return "an array of " + std::to_string(v.size()) + " elements";
-      }
-      std::string out = "[";
-      for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + describe(v[i], depth + 1);
-      return out + "]";
-    }
-    case Json::value_t::object:
-      return depth > 0 ? "{...}" : "an object";
-    default:
-      return "an unsupported value";
-  }
-}
-
-// Dividing by the largest component first keeps the squares from overflowing or
-// underflowing, so any finite non-zero input gives a unit vector.
-Vec3 unitVector(const Vec3& v) {
-  const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  return normalize(v / m);
-}
-
-std::string member(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
-}
-
-std::string element(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
-
-class SceneParser {
+class SceneParser : private JsonReader {
  public:
   SceneParser(std::string name, std::string base_dir, Scene& scene)
-      : m_name(std::move(name)), m_base_dir(std::move(base_dir)), m_scene(scene) {}
+      : JsonReader(std::move(name), &scene.warnings), m_base_dir(std::move(base_dir)), m_scene(scene) {}
 
   void parse(const ParsedJson& parsed) {
     const Json& root = parsed.root;
@@ -139,73 +73,6 @@ class SceneParser {
   }
 
  private:
-  using Check = bool (*)(double);
-
-  // Messages start with the file's name; a fragment the C API built has none.
-  std::string prefix() const { return m_name.empty() ? "" : m_name + ": "; }
-
-  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw SceneError(prefix() + (path.empty() ? "" : path + ": ") + what);
-  }
-  [[noreturn]] void expected(const std::string& path, const std::string& what, const Json& got) const {
-    fail(path, "expected " + what + ", got " + describe(got));
-  }
-
-  static const Json* find(const Json& obj, const char* key) {
-    auto it = obj.find(key);
-    return it == obj.end() ? nullptr : &*it;
-  }
-
-  const Json& require(const Json& obj, const std::string& path, const char* key) const {
-    const Json* v = find(obj, key);
-    if (!v) fail(path, std::string("missing required key '") + key + "'");
-    return *v;
-  }
-
-  void checkObject(const Json& v, const std::string& path, std::initializer_list<const char*> known) {
-    if (!v.is_object()) expected(path, "an object", v);
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      bool ok = false;
-      for (const char* k : known) ok = ok || it.key() == k;
-      if (!ok)
-        m_scene.warnings.push_back(prefix() + path + ": unknown key '" + it.key() + "' (ignored)");
-    }
-  }
-
-  double number(const Json& v, const std::string& path, const char* what = "a finite number",
-                Check ok = nullptr) const {
-    if (!v.is_number()) expected(path, what, v);
-    const double x = v.get<double>();
-    if (!std::isfinite(x) || (ok && !ok(x))) expected(path, what, v);
-    return x;
-  }
-
-  long long integer(const Json& v, const std::string& path, long long lo, long long hi) const {
-    const std::string what = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-    if (!v.is_number()) expected(path, what, v);
-    const double x = v.get<double>();
-    if (!std::isfinite(x) || x != std::floor(x) || x < lo || x > hi) expected(path, what, v);
-    return static_cast<long long>(x);
-  }
-
-  std::string string(const Json& v, const std::string& path, const std::string& what) const {
-    if (!v.is_string()) expected(path, what, v);
-    return v.get<std::string>();
-  }
-
-  Vec3 vec3(const Json& v, const std::string& path, const char* what = "a finite number",
-            Check ok = nullptr) const {
-    if (!v.is_array() || v.size() != 3) expected(path, "an array of 3 numbers", v);
-    return {number(v[0], element(path, 0), what, ok), number(v[1], element(path, 1), what, ok),
-            number(v[2], element(path, 2), what, ok)};
-  }
-
-  Vec3 nonZeroVec3(const Json& v, const std::string& path) const {
-    const Vec3 r = vec3(v, path);
-    if (r == Vec3()) expected(path, "a non-zero vector", v);
-    return r;
-  }
-
   // A colour is 3 non-negative numbers; one number stands for a grey.
   // Components in [0, kMaxColour]: the kernels multiply a colour by others and
   // by a light (color x intensity <= 1e30), and each product must stay a float.
@@ -490,37 +357,18 @@ class SceneParser {
     if (!v.is_object()) expected(path, "an object", v);
     const std::string typePath = member(path, "type");
     const std::string type =
-        string(require(v, path, "type"), typePath, "a string (sphere, box, plane, triangle, mesh)");
+        string(require(v, path, "type"), typePath, "a string (" + primitiveKindNames() + ", mesh)");
     Object o;
-    if (type == "sphere") {
-      checkObject(v, path, {"type", "material", "transform", "transform_end", "center", "radius"});
-      o.type = ObjectType::Sphere;
-      o.center = vec3(require(v, path, "center"), member(path, "center"));
-      o.radius = number(require(v, path, "radius"), member(path, "radius"), "a positive number",
-                        [](double x) { return x > 0; });
-    } else if (type == "box") {
-      checkObject(v, path, {"type", "material", "transform", "transform_end", "min", "max"});
-      o.type = ObjectType::Box;
-      o.box_min = vec3(require(v, path, "min"), member(path, "min"));
-      o.box_max = vec3(require(v, path, "max"), member(path, "max"));
-      if (!(o.box_min.x < o.box_max.x && o.box_min.y < o.box_max.y && o.box_min.z < o.box_max.z))
-        fail(member(path, "max"), "expected max > min on every axis, got max " + formatVec(o.box_max) +
-                                      " and min " + formatVec(o.box_min));
-    } else if (type == "plane") {
-      checkObject(v, path, {"type", "material", "transform", "transform_end", "point", "normal"});
-      o.type = ObjectType::Plane;
-      o.point = vec3(require(v, path, "point"), member(path, "point"));
-      o.normal = unitVector(nonZeroVec3(require(v, path, "normal"), member(path, "normal")));
-    } else if (type == "triangle") {
-      checkObject(v, path, {"type", "material", "transform", "transform_end", "vertices"});
-      o.type = ObjectType::Triangle;
-      parseVertices(require(v, path, "vertices"), member(path, "vertices"), o.vertices);
-    } else if (type == "mesh") {
+    const PrimitiveKind* kind = primitiveKindNamed(type);
+    if (type == "mesh") {
       checkObject(v, path, {"type", "material", "transform", "transform_end", "file", "smooth"});
       o.type = ObjectType::Mesh;
       parseMesh(v, path, o);
+    } else if (kind) {
+      o.type = kind->type;
+      kind->parse(*this, v, path, type, o);
     } else {
-      fail(typePath, "unknown object type '" + type + "' (expected sphere, box, plane, triangle, mesh)");
+      fail(typePath, "unknown object type '" + type + "' (expected " + primitiveKindNames() + ", mesh)");
     }
     if (const Json* p = find(v, "material")) {
       o.material = materialIndex(*p, member(path, "material"));
@@ -531,9 +379,15 @@ class SceneParser {
       o.moving = true;
       o.transform_end = parseTransform(*p, member(path, "transform_end"));
     }
-    bakeTransform(o);
-    const std::string problem = objectProblem(o);
-    if (!problem.empty()) fail(path, problem);
+    if (kind) {
+      // Kinds the kernels keep in world space take a static transform into their geometry.
+      if (kind->bake && !o.transform.isIdentity() && !o.moving) {
+        kind->bake(o);
+        o.transform = Transform::identity();
+      }
+      const std::string problem = kind->problem(o);
+      if (!problem.empty()) fail(path, problem);
+    }
     return o;
   }
 
@@ -558,35 +412,6 @@ class SceneParser {
       if (!p->is_boolean()) expected(member(path, "smooth"), "true or false", *p);
       o.smooth = p->get<bool>();
     }
-  }
-
-  void parseVertices(const Json& v, const std::string& path, Vec3 out[3]) const {
-    if (!v.is_array() || v.size() != 3) expected(path, "an array of 3 points", v);
-    for (int k = 0; k < 3; ++k) out[k] = vec3(v[k], element(path, k));
-    const Vec3 e1 = out[1] - out[0], e2 = out[2] - out[0];
-    // Relative test: the sine of the corner angle, so the scale of the scene does not matter.
-    if (!(length(cross(e1, e2)) > 1e-12 * length(e1) * length(e2)))
-      expected(path, "a non-degenerate triangle (area > 0)", v);
-  }
-
-  // Triangles and planes are stored in world space: the renderer has no
-  // object-space path for them.
-  static void bakeTransform(Object& o) {
-    if (o.transform.isIdentity() || o.moving) return;  // a moving object keeps object space
-    if (o.type == ObjectType::Triangle) {
-      for (Vec3& p : o.vertices) p = o.transform.applyPoint(p);
-    } else if (o.type == ObjectType::Plane) {
-      const Transform inv = o.transform.inverse();
-      const Vec3& n = o.normal;  // normals go through the inverse transpose
-      const Vec3 world{inv.m[0][0] * n.x + inv.m[1][0] * n.y + inv.m[2][0] * n.z,
-                       inv.m[0][1] * n.x + inv.m[1][1] * n.y + inv.m[2][1] * n.z,
-                       inv.m[0][2] * n.x + inv.m[1][2] * n.y + inv.m[2][2] * n.z};
-      o.point = o.transform.applyPoint(o.point);
-      o.normal = unitVector(world);
-    } else {
-      return;
-    }
-    o.transform = Transform::identity();
   }
 
   // Name -> index into m_scene.materials, built on first use from the scene's
@@ -673,7 +498,6 @@ class SceneParser {
     return t;
   }
 
-  std::string m_name;
   std::string m_base_dir;  // mesh files are relative to the scene file's folder
   Scene& m_scene;
   const std::vector<std::string>* m_material_order = nullptr;  // the materials' keys in file order

@@ -1,5 +1,5 @@
 // The float-range rules every checked value follows, shared by the checks of
-// lights, objects and the rest (scene/light_check.h, scene/object_check.h):
+// lights, objects and the rest (scene/light_check.h, scene/primitives/<kind>.cpp):
 // what the kernels compute from a value must fit in float, and lengths are
 // squared and multiplied by areas there, so coordinates stay well inside it.
 #pragma once

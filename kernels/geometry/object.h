@@ -1,4 +1,6 @@
-/* Intersection and surface queries for any ObjectGpu, dispatching on its type.
+/* Intersection and surface queries for any ObjectGpu, dispatching on its type:
+ * the kernels' registration of the primitive kinds (each kind's routines are in
+ * its own geometry/<kind>.h; its host half in host/scene/primitives/).
  * Transformed spheres and boxes are intersected in object space: the ray is
  * mapped by the world-to-object matrix without renormalising, so t is the same
  * parameter in both spaces. */
@@ -24,6 +26,11 @@ inline float3 xform_point(const float* m, float3 p) { return xform_vector(m, p) 
 inline float3 xform_normal(const float* m, float3 n) {
   return (float3)(m[0] * n.x + m[4] * n.y + m[8] * n.z, m[1] * n.x + m[5] * n.y + m[9] * n.z,
                   m[2] * n.x + m[6] * n.y + m[10] * n.z);
+}
+
+/* The side data of a kind that keeps some (kernels/shared/object_gpu.h). */
+inline __global const float* object_side_data(__global const ObjectGpu* ob) {
+  return ((__global const ObjectDataGpu*)(ob + as_int(ob->p[OBJECT_DATA_WORD])))->words;
 }
 
 /* The world-to-object matrix of a transformed object at `time`, into m. */

@@ -1,4 +1,6 @@
-/* One primitive as the kernels see it; shared by host and kernels. */
+/* One primitive as the kernels see it; shared by host and kernels. Each kind
+ * lays out p[] its own way (host/scene/primitives/<kind>.cpp and
+ * kernels/geometry/<kind>.h). */
 #ifndef PRISM_OBJECT_GPU_H
 #define PRISM_OBJECT_GPU_H
 
@@ -20,6 +22,14 @@
 #define OBJECT_MOVING 2
 #define OBJECT_MOTION_SHIFT 8
 
+/* Side data. A kind whose parameters do not fit p[] keeps them in a data
+ * record (ObjectDataGpu) after every primitive in the same array, and the
+ * record's offset from the primitive, in records, as the int bits of
+ * p[OBJECT_DATA_WORD]. The record's floats start at its `words` and run on
+ * through as many following records as they need (those carry no header). */
+#define OBJECT_DATA 101 /* the type of a data record: not a primitive */
+#define OBJECT_DATA_WORD 11
+
 typedef struct ObjectGpu {
   int type;     /* OBJECT_* */
   int material; /* index into the material array */
@@ -32,5 +42,12 @@ typedef struct ObjectGpu {
    * with its transposed linear part. Smooth triangles: see OBJECT_FLAG_VERTEX_NORMALS. */
   float world_to_object[12];
 } ObjectGpu;
+
+typedef struct ObjectDataGpu {
+  int type;  /* OBJECT_DATA */
+  int size;  /* floats, from `words` on */
+  int unused[2];
+  float words[24];
+} ObjectDataGpu;
 
 #endif

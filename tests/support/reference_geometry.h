@@ -1,6 +1,7 @@
 // Double-precision reference intersections, written independently of the
 // kernels (textbook forms, not the kernels' numerically tuned ones), for checking
-// the device's float results.
+// the device's float results. Each kind's own lives with the kind
+// (scene/primitives/<kind>.cpp, PrimitiveKind::reference); this adds transforms.
 #pragma once
 
 #include <optional>

@@ -1,0 +1,55 @@
+// The registration of every primitive kind.
+#include <cstring>
+#include <stdexcept>
+
+#include "scene/primitives/primitive_kind.h"
+
+namespace prism {
+
+const std::vector<const PrimitiveKind*>& primitiveKinds() {
+  static const std::vector<const PrimitiveKind*> kinds = {&kSphereKind, &kBoxKind, &kPlaneKind, &kTriangleKind};
+  return kinds;
+}
+
+const PrimitiveKind& primitiveKind(ObjectType type) {
+  for (const PrimitiveKind* k : primitiveKinds())
+    if (k->type == type) return *k;
+  throw std::logic_error("no primitive kind for object type " + std::to_string(static_cast<int>(type)));
+}
+
+const PrimitiveKind* primitiveKindOfGpu(int gpu_type) {
+  for (const PrimitiveKind* k : primitiveKinds())
+    if (k->gpu_type == gpu_type) return k;
+  return nullptr;
+}
+
+const PrimitiveKind* primitiveKindNamed(const std::string& name) {
+  for (const PrimitiveKind* k : primitiveKinds())
+    for (const std::string& n : k->names)
+      if (n == name) return k;
+  return nullptr;
+}
+
+std::string primitiveKindNames() {
+  std::vector<std::string> names;
+  for (const PrimitiveKind* k : primitiveKinds()) names.insert(names.end(), k->names.begin(), k->names.end());
+  return join(names);
+}
+
+const float* objectSideData(const ObjectGpu& g) {
+  const PrimitiveKind* kind = primitiveKindOfGpu(g.type);
+  if (!kind || !kind->has_side_data) return nullptr;
+  int records;
+  std::memcpy(&records, &g.p[OBJECT_DATA_WORD], sizeof records);
+  return reinterpret_cast<const ObjectDataGpu*>(&g + records)->words;
+}
+
+void setSideDataOffset(ObjectGpu& g, int records) { std::memcpy(&g.p[OBJECT_DATA_WORD], &records, sizeof records); }
+
+std::vector<std::string> objectKeys(std::initializer_list<const char*> own) {
+  std::vector<std::string> keys = {"type", "material", "transform", "transform_end"};
+  keys.insert(keys.end(), own.begin(), own.end());
+  return keys;
+}
+
+}  // namespace prism
