@@ -258,7 +258,8 @@ typedef enum PrismObjectType {
   PRISM_OBJECT_SPHERE = 0,  /* center, radius */
   PRISM_OBJECT_BOX = 1,     /* box_min, box_max */
   PRISM_OBJECT_PLANE = 2,   /* point, normal */
-  PRISM_OBJECT_TRIANGLE = 3 /* vertices */
+  PRISM_OBJECT_TRIANGLE = 3, /* vertices */
+  PRISM_OBJECT_QUADRIC = 4   /* coefficients, clip_min, clip_max, capped; presets: prismAddSceneJson */
 } PrismObjectType;
 
 /* An analytic object (meshes: prismAddMeshFile, prismAddMeshArrays); only the
@@ -274,10 +275,17 @@ typedef struct PrismObject {
   float box_min[3], box_max[3];
   float point[3], normal[3];
   float vertices[9]; /* three xyz points */
+  /* A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0 inside
+   * the box [clip_min, clip_max]; capped (non-zero): the solid {<= 0} closed by
+   * the box's faces, else the open surface (docs/scene-format.md, quadrics). */
+  float coefficients[10];
+  float clip_min[3], clip_max[3];
+  uint32_t capped;
 } PrismObject;
 
 /* Fills `object` with struct_size, `type`, and zero everywhere else except
- * radius 1, box_min (-1, -1, -1), box_max (1, 1, 1) and normal (0, 1, 0). */
+ * radius 1, box_min and clip_min (-1, -1, -1), box_max and clip_max (1, 1, 1)
+ * and normal (0, 1, 0). */
 PRISM_API void prismDefaultObject(PrismObject* object, PrismObjectType type);
 /* Adds an object; `out_object` (may be NULL) receives its index among the
  * scene's objects. */
@@ -489,7 +497,7 @@ typedef struct PrismRay {
 typedef struct PrismHit {
   float t;      /* +inf on a miss */
   int32_t prim; /* -1 on a miss */
-  float u, v;   /* triangles: barycentrics of vertices 1 and 2; 0 otherwise */
+  float u, v;   /* triangles: barycentrics of vertices 1 and 2; quadrics: u is 0 on the surface, 1 + 2 axis (+1 at max) on a cap; 0 otherwise */
 } PrismHit;     /* 16 bytes: the record `prism trace` writes */
 
 /* Closest hit in (tmin, tmax) for each of `count` rays. `trace_seconds` (may be

@@ -86,6 +86,15 @@ Json objectJson(const PrismObject& o) {
       j = Json{{"type", "triangle"},
                {"vertices", Json::array({jsonTriple(o.vertices), jsonTriple(o.vertices + 3), jsonTriple(o.vertices + 6)})}};
       break;
+    case PRISM_OBJECT_QUADRIC: {
+      Json coefficients = Json::array();
+      for (float c : o.coefficients) coefficients.push_back(c);
+      j = Json{{"type", "quadric"},
+               {"coefficients", coefficients},
+               {"clip", Json{{"min", jsonTriple(o.clip_min)}, {"max", jsonTriple(o.clip_max)}}},
+               {"capped", o.capped != 0}};
+      break;
+    }
   }
   if (o.material) j["material"] = o.material;
   if (o.object_to_world) j["transform"] = matrix(o.object_to_world);
@@ -151,16 +160,16 @@ PRISM_API void prismDefaultObject(PrismObject* object, PrismObjectType type) {
   object->struct_size = sizeof(PrismObject);
   object->type = static_cast<uint32_t>(enumValue(type));
   object->radius = 1;
-  for (int k = 0; k < 3; ++k) object->box_min[k] = -1, object->box_max[k] = 1;
+  for (int k = 0; k < 3; ++k) object->box_min[k] = object->clip_min[k] = -1, object->box_max[k] = object->clip_max[k] = 1;
   object->normal[1] = 1;
 }
 
 PRISM_API PrismStatus prismAddObject(PrismScene scene, const PrismObject* object, uint32_t* out_object) {
   PRISM_REQUIRE(scene && object, "prismAddObject: NULL argument");
   PRISM_REQUIRE(object->struct_size >= sizeof(PrismObject), "prismAddObject: struct_size is too small");
-  PRISM_REQUIRE(object->type <= PRISM_OBJECT_TRIANGLE,
-                "prismAddObject: type must be PRISM_OBJECT_SPHERE, PRISM_OBJECT_BOX, PRISM_OBJECT_PLANE or "
-                "PRISM_OBJECT_TRIANGLE");
+  PRISM_REQUIRE(object->type <= PRISM_OBJECT_QUADRIC,
+                "prismAddObject: type must be PRISM_OBJECT_SPHERE, PRISM_OBJECT_BOX, PRISM_OBJECT_PLANE, "
+                "PRISM_OBJECT_TRIANGLE or PRISM_OBJECT_QUADRIC");
   return guarded(__func__, [&] {
     addChecked(scene, Json{{"objects", Json::array({objectJson(*object)})}});
     scene->changed();

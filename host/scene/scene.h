@@ -75,7 +75,7 @@ struct Light {
   int samples = 1;
 };
 
-enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4 };
+enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4, Quadric = 5 };
 
 struct Object {
   ObjectType type = ObjectType::Sphere;
@@ -92,6 +92,10 @@ struct Object {
   Vec3 box_min, box_max;
   Vec3 point, normal{0, 1, 0};
   Vec3 vertices[3];
+  // Parameters of the kinds that lay them out themselves (scene/primitives/):
+  // quadric: coefficients A..J, then the clip box's min and max.
+  std::vector<double> params;
+  bool capped = false;  // quadric: close the solid with the clip box's faces
   // Mesh: its triangles (shared with other objects naming the same file), drawn
   // through `transform`; `material` is used for triangles whose file gives none,
   // or for all of them when `material_override` is set. The file's own materials

@@ -11,6 +11,7 @@
 #include "geometry/box.h"
 #include "geometry/motion.h"
 #include "geometry/plane.h"
+#include "geometry/quadric.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "shared/hit_gpu.h"
@@ -65,6 +66,13 @@ inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, f
       return plane_intersect(o, d, tmin, tmax, load3g(p), load3g(p + 3), t);
     case OBJECT_TRIANGLE:
       return triangle_intersect(o, d, tmin, tmax, load3g(p), load3g(p + 3), load3g(p + 6), t, u, v);
+    case OBJECT_QUADRIC: { /* u carries the surface hit (QUADRIC_SURFACE or a cap) to object_surface */
+      int face;
+      bool hit = quadric_intersect(o, d, tmin, tmax, p, object_side_data(ob), (ob->flags & OBJECT_FLAG_CAPPED) != 0,
+                                   t, &face);
+      *u = (float)face;
+      return hit;
+    }
   }
   return false;
 }
@@ -96,6 +104,12 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
       n = load3g(q + 3);
       if (want_uv) *uv = plane_uv(p, load3g(q), n);
       break;
+    case OBJECT_QUADRIC: {
+      int face = (int)hit.u;
+      n = quadric_normal(q, p, face);
+      if (want_uv) *uv = quadric_uv(p, object_side_data(ob), face);
+      break;
+    }
     default:
       n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));
       *uv = (float2)(hit.u, hit.v);

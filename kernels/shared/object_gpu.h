@@ -8,11 +8,14 @@
 #define OBJECT_BOX 1
 #define OBJECT_PLANE 2
 #define OBJECT_TRIANGLE 3
+#define OBJECT_QUADRIC 4
 
 /* A triangle whose world_to_object array holds unit vertex normals n0, n1, n2
  * (9 floats) to interpolate, instead of a matrix (triangles are stored in world
  * space and need none). */
 #define OBJECT_FLAG_VERTEX_NORMALS 1
+/* A quadric closed by its clip box's faces (geometry/quadric.h). */
+#define OBJECT_FLAG_CAPPED 2
 
 /* has_transform values. A moving object keeps its geometry (and vertex normals)
  * in object space; its world-to-object matrix is made per ray, at the ray's
@@ -36,7 +39,8 @@ typedef struct ObjectGpu {
   int has_transform; /* 0: none; OBJECT_STATIC: intersect in object space through `world_to_object`; OBJECT_MOVING */
   int flags;    /* OBJECT_FLAG_* and, when moving, the motion record's offset; aligns the arrays */
   /* sphere: center xyz, radius; box: min xyz, max xyz; plane: point xyz, normal xyz;
-   * triangle: v0 xyz, v1 xyz, v2 xyz (world space). */
+   * triangle: v0 xyz, v1 xyz, v2 xyz (world space); quadric: coefficients A..J
+   * (scaled to a largest magnitude of 1), its clip box in side data. */
   float p[12];
   /* Rows of the 3x4 world-to-object affine matrix. Object-space normals map back
    * with its transposed linear part. Smooth triangles: see OBJECT_FLAG_VERTEX_NORMALS. */

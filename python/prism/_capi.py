@@ -69,7 +69,8 @@ class Object(Structure):
     _fields_ = [("struct_size", c_size_t), ("type", c_uint32), ("material", c_char_p),
                 ("object_to_world", POINTER(c_float)), ("object_to_world_end", POINTER(c_float)),
                 ("center", float3), ("radius", c_float), ("box_min", float3), ("box_max", float3),
-                ("point", float3), ("normal", float3), ("vertices", c_float * 9)]
+                ("point", float3), ("normal", float3), ("vertices", c_float * 9),
+                ("coefficients", c_float * 10), ("clip_min", float3), ("clip_max", float3), ("capped", c_uint32)]
 
 
 ProgressFn = CFUNCTYPE(c_int, c_void_p, c_double)

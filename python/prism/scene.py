@@ -12,7 +12,7 @@ from ._capi import check, lib
 
 _SHADING = {"phong": 0, "blinn": 1, "cook-torrance": 2}
 _MICROFACET = {"beckmann": 0, "ggx": 1}
-_OBJECT = {"sphere": 0, "box": 1, "plane": 2, "triangle": 3}
+_OBJECT = {"sphere": 0, "box": 1, "plane": 2, "triangle": 3, "quadric": 4}
 
 
 def _triple(values, what):
@@ -131,6 +131,14 @@ class Scene:
                 if flat.size != 9:
                     raise _capi.InvalidArgumentError("vertices: expected 3 points", "PRISM_ERROR_INVALID_ARGUMENT")
                 o.vertices = (ctypes.c_float * 9)(*flat.tolist())
+            elif field == "coefficients":
+                flat = np.asarray(value, dtype=np.float32).reshape(-1)
+                if flat.size != 10:
+                    raise _capi.InvalidArgumentError("coefficients: expected 10 numbers (A..J)",
+                                                     "PRISM_ERROR_INVALID_ARGUMENT")
+                o.coefficients = (ctypes.c_float * 10)(*flat.tolist())
+            elif field == "capped":
+                o.capped = 1 if value else 0
             elif field == "radius":
                 o.radius = float(value)
             else:
@@ -155,6 +163,14 @@ class Scene:
 
     def add_triangle(self, vertices, material=None, transform=None, transform_end=None):
         return self._add_object("triangle", material, transform, transform_end, vertices=vertices)
+
+    def add_quadric(self, coefficients, clip_min, clip_max, capped=False, material=None, transform=None,
+                    transform_end=None):
+        """Adds the quadric A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0
+        (`coefficients` A..J) inside the box [clip_min, clip_max]; `capped`: the solid where it is
+        <= 0, closed by the box's faces. Presets (cylinder, cone, ...): `add({"objects": [...]})`."""
+        return self._add_object("quadric", material, transform, transform_end, coefficients=coefficients,
+                                clip_min=clip_min, clip_max=clip_max, capped=capped)
 
     def add_mesh(self, positions, triangles, material=None, transform=None):
         """Adds a triangle mesh from arrays (copied): positions (N, 3) float,

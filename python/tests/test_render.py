@@ -36,6 +36,9 @@ def whitted_dict():
             {"type": "sphere", "center": [-0.75, 1, 0.75], "radius": 1, "material": "glass"},
             {"type": "box", "min": [1, 0, -1], "max": [2, 1, 0], "material": "brushed"},
             {"type": "triangle", "vertices": [[-3, 0, -2], [-1, 0, -2], [-2, 2, -2]], "material": "glass"},
+            # (x - 2.5)^2 + (z - 1)^2 = 0.25, 0 <= y <= 1.5: a capped cylinder as a general quadric
+            {"type": "quadric", "coefficients": [1, 0, 1, 0, 0, 0, -5, 0, -2, 7],
+             "clip": {"min": [2, 0, 0.5], "max": [3, 1.5, 1.5]}, "capped": True, "material": "brushed"},
         ],
     }
 
@@ -54,13 +57,15 @@ def test_a_scene_built_in_code_renders_as_the_same_scene_as_json(ctx):
     assert built.add_sphere((-0.75, 1, 0.75), 1, material="glass") == 1
     assert built.add_box((1, 0, -1), (2, 1, 0), material="brushed") == 2
     assert built.add_triangle([[-3, 0, -2], [-1, 0, -2], [-2, 2, -2]], material="glass") == 3
+    assert built.add_quadric([1, 0, 1, 0, 0, 0, -5, 0, -2, 7], (2, 0, 0.5), (3, 1.5, 1.5), capped=True,
+                             material="brushed") == 4
     written = prism.Scene.from_json(whitted_dict())
     a = ctx.render(built, width=72, height=40, max_depth=6, aovs=("depth", "primid"))
     b = ctx.render(written, width=72, height=40, max_depth=6, aovs=("depth", "primid"))
     assert a.rgba.tobytes() == b.rgba.tobytes()
     assert a.aovs["depth"].tobytes() == b.aovs["depth"].tobytes()
     assert (a.aovs["primid"] == b.aovs["primid"]).all()
-    assert set(np.unique(a.aovs["primid"])) == {-1, 0, 1, 2, 3}  # every object is seen, and the sky
+    assert set(np.unique(a.aovs["primid"])) == {-1, 0, 1, 2, 3, 4}  # every object is seen, and the sky
 
 
 def test_depth_and_primid_match_the_cameras_closed_form(ctx):

@@ -207,6 +207,44 @@ TEST_CASE("all structures agree on a scene of every primitive kind", "[accel]") 
   checkScene(mixedScene(), 20000, 96, 100000);
 }
 
+TEST_CASE("all structures agree on rays aimed at each quadric, and the quadrics are hit", "[accel]") {
+  // The quadrics are small in the mixed scene; aim rays at each one's box.
+  AccelScene scene = mixedScene(300);
+  const Aabb box = boundsOf(scene.objects);
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<float> u01(0, 1);
+  std::vector<QueryRay> rays;
+  std::vector<std::int32_t> quadrics;
+  for (std::size_t i = 0; i < primitiveCount(scene.objects); ++i) {
+    if (scene.objects[i].type != OBJECT_QUADRIC) continue;
+    quadrics.push_back(static_cast<std::int32_t>(i));
+    Aabb b;
+    REQUIRE(objectBounds(scene.objects[i], &b));
+    for (int k = 0; k < 400; ++k) {
+      float o[3], t[3];
+      for (int a = 0; a < 3; ++a) {
+        o[a] = box.lo[a] - 0.5f * (box.hi[a] - box.lo[a]) + 2 * (box.hi[a] - box.lo[a]) * u01(rng);
+        t[a] = b.lo[a] + (b.hi[a] - b.lo[a]) * u01(rng);
+      }
+      rays.push_back(QueryRay{o[0], o[1], o[2], 0, t[0] - o[0], t[1] - o[1], t[2] - o[2], INFINITY});
+    }
+  }
+  REQUIRE(quadrics.size() == 7);
+  RayQueryEngine none(sharedContext(), scene.objects, AccelKind::None, scene.materials);
+  const std::vector<HitGpu> ref = none.intersect(rays);
+  for (std::int32_t q : quadrics) {
+    std::size_t hits = 0;
+    for (const HitGpu& h : ref) hits += h.prim == q;
+    INFO("quadric " << q);
+    CHECK(hits >= 5);
+  }
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+    RayQueryEngine engine(sharedContext(), scene.objects, kind, scene.materials);
+    INFO(accelName(kind));
+    checkHits(scene, "against none", rays, ref, engine.intersect(rays));
+  }
+}
+
 TEST_CASE("all structures agree on procedural meshes", "[accel]") {
   checkScene(meshScene("icosphere5", icosphere(5, 0, 0, 0, 1)), 20000, 96, 10000);
   checkScene(meshScene("soup20k", triangleSoup(20000, 3, 0.02f)), 20000, 96, 3000);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@
 #include "accel_workloads.h"
 #include "kernels/shared/material_gpu.h"
 #include "kernels/shared/object_gpu.h"
+#include "scene/primitives/primitive_kind.h"
+#include "scene/scene_loader.h"
 #include "support/test_data.h"
 
 namespace prism::test {
@@ -39,11 +42,44 @@ inline MaterialGpu materialWithTransmit(float transmit) {
   return m;
 }
 
+// Appends the quadrics of a scene-format objects array (their records, then
+// their data records after every primitive), through the kind's own flatten.
+inline void appendQuadrics(std::vector<ObjectGpu>& objects, const std::string& objects_json,
+                           const std::vector<int>& materials) {
+  Scene scene = parseScene(R"({"objects": )" + objects_json + "}", "quadrics");
+  std::vector<std::vector<float>> sides;
+  const std::size_t first = objects.size();
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& o = scene.objects[i];
+    ObjectGpu g = identityObject(OBJECT_QUADRIC, materials[i % materials.size()]);
+    sides.emplace_back();
+    primitiveKind(o.type).flatten(o, g, sides.back());
+    if (!o.transform.isIdentity()) {
+      const Transform inv = o.transform.inverse();
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) g.world_to_object[4 * r + c] = static_cast<float>(inv.m[r][c]);
+      g.has_transform = 1;
+    }
+    objects.push_back(g);
+  }
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    ObjectDataGpu record{};
+    record.type = OBJECT_DATA;
+    record.size = static_cast<int>(sides[i].size());
+    for (std::size_t k = 0; k < sides[i].size(); ++k) record.words[k] = sides[i][k];
+    ObjectGpu slot;
+    std::memcpy(&slot, &record, sizeof slot);
+    setSideDataOffset(objects[first + i], static_cast<int>(objects.size() - (first + i)));
+    objects.push_back(slot);
+  }
+}
+
 // Every kind of primitive, in a box about [-1, 2]^3: a triangle soup, an
 // icosphere (shared edges and vertices: exact ties), spheres, boxes, scaled
-// and rotated spheres and boxes, two planes, degenerate triangles, and
+// and rotated spheres and boxes, two planes, degenerate triangles,
 // axis-aligned triangles lying exactly on x = 0.5, y = 0.5, z = 0.5 (the
-// centre planes of a unit cube cell). Materials 1 and 2 are semitransparent.
+// centre planes of a unit cube cell), and quadrics open and capped, placed by
+// transforms or by their coefficients. Materials 1 and 2 are semitransparent.
 inline AccelScene mixedScene(std::size_t soup = 1500) {
   AccelScene s;
   s.name = "mixed";
@@ -139,6 +175,19 @@ inline AccelScene mixedScene(std::size_t soup = 1500) {
       }
       s.objects.push_back(g);
     }
+  // Quadrics last: their data records close the array.
+  appendQuadrics(s.objects, R"([
+      {"type": "cylinder", "radius": 0.08, "height": 0.3, "transform": {"translate": [0.2, 0.6, 0.8]}},
+      {"type": "cylinder", "radius": 0.06, "height": 0.4, "capped": false,
+       "transform": [{"rotate": {"axis": [1, 0, 1], "angle": 50}}, {"translate": [0.5, 0.5, 0.5]}]},
+      {"type": "cone", "radius": 0.1, "height": 0.2, "transform": {"translate": [0.8, 0.2, 0.3]}},
+      {"type": "paraboloid", "radius": 0.1, "height": 0.15, "capped": false, "transform": {"translate": [0.3, 0.3, 0.2]}},
+      {"type": "hyperboloid", "radius": 0.05, "top_radius": 0.1, "height": 0.12, "transform": {"translate": [0.7, 0.8, 0.6]}},
+      {"type": "quadric", "coefficients": [1, 1, 1, 0, 0, 0, -1, -1.2, -0.8, 0.7675], "capped": true,
+       "clip": {"min": [0.45, 0.55, 0.35], "max": [0.55, 0.65, 0.45]}},
+      {"type": "quadric", "coefficients": [5, -5, 0, 0, 0, 0, -5, 2, -1, 1.8],
+       "clip": {"min": [0.4, 0.1, 0.6], "max": [0.6, 0.3, 0.9]}}])",
+                {0, 1, 2});
   return s;
 }
 

@@ -110,7 +110,7 @@ TEST_CASE("boxes overlap cells by intervals, touching included", "[accel][exact]
   CHECK_FALSE(meets(b, kUnit));
 }
 
-TEST_CASE("transformed objects and planes get conservative or no bounds", "[accel][exact]") {
+TEST_CASE("transformed objects (quadrics: their clip box) and planes get conservative or no bounds", "[accel][exact]") {
   AccelScene scene = mixedScene(0);
   int transformed = 0, planes = 0;
   for (const ObjectGpu& ob : scene.objects) {
@@ -134,6 +134,15 @@ TEST_CASE("transformed objects and planes get conservative or no bounds", "[acce
       REQUIRE(det != 0);
       std::mt19937 rng(3);
       std::uniform_real_distribution<double> u(-1, 1);
+      // The object-space shape: the unit sphere or box, or a quadric's clip box.
+      double centre[3] = {0, 0, 0}, half[3] = {1, 1, 1};
+      if (ob.type == OBJECT_QUADRIC) {
+        const float* clip = objectSideData(ob);
+        for (int a = 0; a < 3; ++a) {
+          centre[a] = 0.5 * (double(clip[a]) + clip[3 + a]);
+          half[a] = 0.5 * (double(clip[3 + a]) - clip[a]);
+        }
+      }
       int inside = 0;
       for (int k = 0; k < 2000; ++k) {
         double q[3] = {u(rng), u(rng), u(rng)};
@@ -146,6 +155,7 @@ TEST_CASE("transformed objects and planes get conservative or no bounds", "[acce
             q[k % 3] = q[k % 3] < 0 ? -1 : 1;
           }
         }
+        for (int a = 0; a < 3; ++a) q[a] = centre[a] + half[a] * q[a];
         // Solve m w = q - t by Cramer's rule.
         double rhs[3] = {q[0] - t[0], q[1] - t[1], q[2] - t[2]}, w[3];
         for (int c = 0; c < 3; ++c) {
@@ -166,7 +176,7 @@ TEST_CASE("transformed objects and planes get conservative or no bounds", "[acce
     }
   }
   CHECK(planes == 2);
-  CHECK(transformed == 12);
+  CHECK(transformed == 12 + 5);  // spheres and boxes, quadrics
 }
 
 TEST_CASE("perfect-split bounds clip a triangle to the cell", "[accel][exact]") {

@@ -148,6 +148,10 @@ int main(int argc, char** argv) {
   BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
   prismDefaultObject(&object, PRISM_OBJECT_TRIANGLE); /* all three vertices at the origin */
   BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
+  prismDefaultObject(&object, PRISM_OBJECT_QUADRIC); /* all coefficients 0: no surface */
+  BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
+  object.coefficients[0] = NAN;
+  BAD(prismAddObject(scene, &object, NULL), "prismAddObject");
   prismDefaultObject(&object, PRISM_OBJECT_SPHERE);
   object.material = "no-such-material";
   BAD(prismAddObject(scene, &object, NULL), "prismAddObject");

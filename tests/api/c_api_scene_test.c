@@ -23,6 +23,9 @@ static const float kMirrorCenter[3] = {1.1f, 1.1f, -1.5f}, kMirrorRadius = 1.1f;
 static const float kGlassCenter[3] = {-0.7f, 0.9f, 0.8f}, kGlassRadius = 0.9f;
 static const float kTriangle[9] = {-2.5f, 0.01f, 1.5f, -1.2f, 0.01f, 2.2f, -2.0f, 1.4f, 1.8f};
 static const float kBoxMin[3] = {1.8f, 0, 0.6f}, kBoxMax[3] = {2.6f, 0.7f, 1.4f};
+/* A capped cylinder (x + 2)^2 + (z + 1)^2 = 0.4^2 as a general quadric. */
+static const float kQuadric[10] = {1, 0, 1, 0, 0, 0, 4, 0, 2, 4.84f};
+static const float kClipMin[3] = {-2.4f, 0, -1.4f}, kClipMax[3] = {-1.6f, 1.2f, -0.6f};
 
 static PrismMaterial checker(void) {
   PrismMaterial m;
@@ -155,7 +158,13 @@ static void sceneJson(char* buf, size_t size) {
   putVec(buf, size, kBoxMin);
   put(buf, size, ", \"max\": ");
   putVec(buf, size, kBoxMax);
-  put(buf, size, ", \"material\": \"brushed\"}]}");
+  put(buf, size, ", \"material\": \"brushed\"}, {\"type\": \"quadric\", \"coefficients\": [");
+  for (int i = 0; i < 10; ++i) put(buf, size, "%s%.17g", i ? ", " : "", (double)kQuadric[i]);
+  put(buf, size, "], \"clip\": {\"min\": ");
+  putVec(buf, size, kClipMin);
+  put(buf, size, ", \"max\": ");
+  putVec(buf, size, kClipMax);
+  put(buf, size, "}, \"capped\": true, \"material\": \"brushed\"}]}");
 }
 
 /* The same scene through the typed calls. */
@@ -211,6 +220,14 @@ static int buildInCode(PrismScene* out) {
   o.material = "brushed";
   CHECK_OK(prismAddObject(scene, &o, &index));
   CHECK(index == 4);
+  prismDefaultObject(&o, PRISM_OBJECT_QUADRIC);
+  memcpy(o.coefficients, kQuadric, sizeof kQuadric);
+  memcpy(o.clip_min, kClipMin, sizeof kClipMin);
+  memcpy(o.clip_max, kClipMax, sizeof kClipMax);
+  o.capped = 1;
+  o.material = "brushed";
+  CHECK_OK(prismAddObject(scene, &o, &index));
+  CHECK(index == 5);
   *out = scene;
   return 0;
 }
@@ -276,7 +293,7 @@ int main(int argc, char** argv) {
   CHECK(differ == 0);
   CHECK(hits > n / 2 && hits < n); /* the plane fills the lower part, the sky the rest */
 
-  /* The same refusals, the same words. Each typed call would add objects[5] or
+  /* The same refusals, the same words. Each typed call would add objects[6] or
    * lights[2]; each text puts the same value at that index. */
   prismDefaultObject(&o, PRISM_OBJECT_SPHERE);
   o.radius = -1;
@@ -284,7 +301,7 @@ int main(int argc, char** argv) {
               "{\"objects\": [{\"type\": \"plane\", \"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"plane\", "
               "\"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"plane\", \"point\": [0,0,0], \"normal\": "
               "[0,1,0]}, {\"type\": \"plane\", \"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"plane\", "
-              "\"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": "
+              "\"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"plane\", \"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": "
               "-1}]}");
   prismDefaultObject(&o, PRISM_OBJECT_BOX);
   o.box_max[1] = -2;
@@ -292,7 +309,7 @@ int main(int argc, char** argv) {
               "{\"objects\": [{\"type\": \"plane\", \"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"plane\", "
               "\"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"plane\", \"point\": [0,0,0], \"normal\": "
               "[0,1,0]}, {\"type\": \"plane\", \"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"plane\", "
-              "\"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"box\", \"min\": [-1,-1,-1], \"max\": "
+              "\"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"plane\", \"point\": [0,0,0], \"normal\": [0,1,0]}, {\"type\": \"box\", \"min\": [-1,-1,-1], \"max\": "
               "[1,-2,1]}]}");
   prismDefaultMaterial(&m);
   m.ior = 0;
@@ -316,18 +333,18 @@ int main(int argc, char** argv) {
               "{\"lights\": [{\"position\": [0,0,0]}, {\"position\": [0,0,0]}, {\"position\": [0, 1.0000000150474662e+30, "
               "0], \"intensity\": 1.0000000150474662e+30}]}");
 
-  /* A refused call leaves the scene as it was: the next object is still objects[5]. */
+  /* A refused call leaves the scene as it was: the next object is still objects[6]. */
   prismDefaultObject(&o, PRISM_OBJECT_SPHERE);
   CHECK_OK(prismAddObject(typed, &o, &index));
-  CHECK(index == 5);
+  CHECK(index == 6);
   /* A fragment adds what a file would; a bad one adds nothing. */
   CHECK(prismAddSceneJson(typed, "{\"objects\": [{\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": 1}, "
                                  "{\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": 0}]}") == PRISM_ERROR_PARSE);
-  CHECK(strstr(prismGetLastError(), "prismAddSceneJson: json: objects[7].radius") != NULL);
+  CHECK(strstr(prismGetLastError(), "prismAddSceneJson: json: objects[8].radius") != NULL);
   CHECK_OK(prismAddSceneJson(typed, "{\"materials\": {\"red\": {\"diffuse\": [1, 0, 0]}}, \"objects\": "
                                     "[{\"type\": \"sphere\", \"center\": [0,3,0], \"radius\": 1, \"material\": \"red\"}]}"));
   CHECK_OK(prismAddObject(typed, &o, &index));
-  CHECK(index == 7);
+  CHECK(index == 8);
 
   /* A context's cached query structure never outlives its scene: scenes made
    * after a release (often at the released one's address) get their own. */

@@ -224,8 +224,9 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
     CHECK(errorOf("{" + materials + R"(, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1,
                    "material": "glas"}]})") ==
           "bad.json: objects[0].material: unknown material 'glas' (known: default, glass, mirror)");
-    CHECK(errorOf(R"({"objects": [{"type": "cone"}]})") ==
-          "bad.json: objects[0].type: unknown object type 'cone' (expected sphere, box, plane, triangle, mesh)");
+    CHECK(errorOf(R"({"objects": [{"type": "torus"}]})") ==
+          "bad.json: objects[0].type: unknown object type 'torus' (expected sphere, box, plane, triangle, quadric, "
+          "cylinder, cone, ellipsoid, paraboloid, hyperboloid, mesh)");
     CHECK(errorOf("[]") == "bad.json: expected a JSON object at top level, got []");
   }
 

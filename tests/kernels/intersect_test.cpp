@@ -7,6 +7,7 @@
 #include <random>
 
 #include "render/ray_queries.h"
+#include "scene/scene_loader.h"
 #include "support/reference_geometry.h"
 #include "support/shared_context.h"
 
@@ -60,6 +61,27 @@ Object rotatedBoxObject() {
   return o;
 }
 
+// An object as the scene format makes it (the presets' coefficients come from the loader).
+Object objectFromJson(const std::string& json) {
+  Scene scene = parseScene(R"({"objects": [)" + json + "]}", "test");
+  REQUIRE(scene.objects.size() == 1);
+  return scene.objects[0];
+}
+
+// Q and its gradient at p (object space), in double.
+double quadricValue(const Object& o, const Vec3& p) {
+  const std::vector<double>& q = o.params;
+  return q[0] * p.x * p.x + q[1] * p.y * p.y + q[2] * p.z * p.z + q[3] * p.x * p.y + q[4] * p.x * p.z +
+         q[5] * p.y * p.z + q[6] * p.x + q[7] * p.y + q[8] * p.z + q[9];
+}
+Vec3 quadricGradient(const Object& o, const Vec3& p) {
+  const std::vector<double>& q = o.params;
+  return {2 * q[0] * p.x + q[3] * p.y + q[4] * p.z + q[6], 2 * q[1] * p.y + q[3] * p.x + q[5] * p.z + q[7],
+          2 * q[2] * p.z + q[4] * p.x + q[5] * p.y + q[8]};
+}
+Vec3 clipMin(const Object& o) { return {o.params[10], o.params[11], o.params[12]}; }
+Vec3 clipMax(const Object& o) { return {o.params[13], o.params[14], o.params[15]}; }
+
 struct Sampler {
   std::mt19937_64 rng{20261123};
   double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
@@ -80,10 +102,39 @@ RefRay randomRay(Sampler& s) {
   return r;
 }
 
+Vec3 inBox(Sampler& s, const Vec3& lo, const Vec3& hi, double shrink = 1) {
+  Vec3 c = (lo + hi) * 0.5, h = (hi - lo) * (0.5 * shrink);
+  return c + Vec3{h.x * s.uniform(-1, 1), h.y * s.uniform(-1, 1), h.z * s.uniform(-1, 1)};
+}
+
+// A point of a quadric's surface inside its clip box: a random point of the
+// box taken to the surface by Newton steps along the gradient.
+bool quadricSurfacePoint(const Object& ob, Sampler& s, Vec3* out) {
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    Vec3 p = inBox(s, clipMin(ob), clipMax(ob));
+    for (int i = 0; i < 30; ++i) {
+      Vec3 g = quadricGradient(ob, p);
+      double g2 = dot(g, g);
+      if (g2 == 0) break;
+      p = p - g * (quadricValue(ob, p) / g2);
+    }
+    Vec3 lo = clipMin(ob), hi = clipMax(ob);
+    if (std::fabs(quadricValue(ob, p)) < 1e-12 && p.x > lo.x && p.y > lo.y && p.z > lo.z && p.x < hi.x &&
+        p.y < hi.y && p.z < hi.z) {
+      *out = p;
+      return true;
+    }
+  }
+  return false;
+}
+
 // A point strictly inside the object (object space), mapped to world space.
 Vec3 insidePoint(const Object& ob, Sampler& s) {
   Vec3 p;
-  if (ob.type == ObjectType::Sphere) {
+  if (ob.type == ObjectType::Quadric) {  // capped: inside the solid and the box
+    do p = inBox(s, clipMin(ob), clipMax(ob), 0.95);
+    while (!(quadricValue(ob, p) < -1e-3));
+  } else if (ob.type == ObjectType::Sphere) {
     p = ob.center + s.unit() * (ob.radius * s.uniform(0, 0.95));
   } else {
     Vec3 c = (ob.box_min + ob.box_max) * 0.5, h = (ob.box_max - ob.box_min) * 0.5 * 0.95;
@@ -121,6 +172,13 @@ RefRay grazingRay(const Object& ob, Sampler& s) {
       n = ob.normal;
       p = ob.point + cross(n, s.unit()) * 2.0 + n * offset;
       t = normalize(cross(n, s.unit()) + n * (offset * s.uniform(-10, 10)));
+      break;
+    }
+    case ObjectType::Quadric: {
+      if (!quadricSurfacePoint(ob, s, &p)) FAIL("no surface point found");
+      n = normalize(quadricGradient(ob, p));
+      p = p + n * (offset * length(clipMax(ob) - clipMin(ob)));
+      t = normalize(cross(n, s.unit()));
       break;
     }
     case ObjectType::Triangle: {
@@ -277,6 +335,63 @@ TEST_CASE("ray-triangle intersection matches the double-precision reference", "[
 TEST_CASE("transformed spheres and boxes are intersected in object space", "[kernels][intersect]") {
   checkObject("ellipsoid (scaled, rotated sphere)", ellipsoidObject(), true);
   checkObject("rotated box", rotatedBoxObject(), true);
+}
+
+TEST_CASE("ray-quadric intersection matches the double-precision reference, open and capped", "[kernels][intersect]") {
+  const std::vector<std::pair<std::string, bool>> quadrics = {
+      {R"({"type": "cylinder", "radius": 0.8, "height": 2, "capped": true})", true},
+      {R"({"type": "cylinder", "radius": 0.8, "height": 2, "capped": false})", false},
+      {R"({"type": "cone", "radius": 1.2, "height": 1.5})", true},
+      {R"({"type": "paraboloid", "radius": 1, "height": 1.5, "capped": false})", false},
+      {R"({"type": "ellipsoid", "radii": [1.5, 0.7, 1]})", true},
+      {R"({"type": "hyperboloid", "radius": 0.5, "top_radius": 1.2, "height": 1.5})", true},
+      {R"({"type": "hyperboloid", "sheets": 2, "vertex": 0.4, "top_radius": 1, "height": 1.5, "capped": false})",
+       false},
+      // A saddle z = x^2 - y^2, open, and the same general form transformed.
+      {R"({"type": "quadric", "coefficients": [1, -1, 0, 0, 0, 0, 0, 0, -1, 0],
+           "clip": {"min": [-1, -1, -1.5], "max": [1, 1, 1.5]}})", false},
+      {R"({"type": "quadric", "coefficients": [2, 1, 0, 0.5, 0, 0, 0, 0, -1, -0.2], "capped": true,
+           "clip": {"min": [-1, -1, -1.5], "max": [1, 1, 1.5]},
+           "transform": [{"rotate": {"axis": [1, 2, 0.5], "angle": 35}}, {"translate": [0.3, -0.2, 0.4]}]})", true},
+  };
+  for (const auto& [json, closed] : quadrics) checkObject(json, objectFromJson(json), closed);
+}
+
+TEST_CASE("a ray that makes the quadric equation linear gets the linear root", "[kernels][intersect]") {
+  // Along a cylinder's axis the t^2 and t terms vanish; parallel to a cone's
+  // generator only the t^2 term does. Closed forms for both.
+  Object open_cyl = objectFromJson(R"({"type": "cylinder", "radius": 0.6, "height": 1.5, "capped": false})");
+  Object capped_cyl = objectFromJson(R"({"type": "cylinder", "radius": 0.6, "height": 1.5})");
+  Object cone = objectFromJson(R"({"type": "cone", "radius": 1, "height": 1, "capped": false})");
+  Object capped_cone = objectFromJson(R"({"type": "cone", "radius": 1, "height": 1})");
+  RefRay axial;
+  axial.o = {0.25, -5, 0.125};
+  axial.d = {0, 1, 0};
+  RefRay generator;  // x^2 = (1 - y)^2 along (-2, 1.5, 0) + t (1, -1, 0): t = 1.25
+  generator.o = {-2, 1.5, 0};
+  generator.d = {1, -1, 0};
+  const struct {
+    const Object* object;
+    RefRay ray;
+    double expected_t;  // 0: a miss
+  } cases[] = {{&open_cyl, axial, 0}, {&capped_cyl, axial, 5}, {&cone, generator, 1.25}, {&capped_cone, generator, 1.25}};
+  for (const auto& c : cases) {
+    Scene scene;
+    scene.materials.push_back(defaultMaterial());
+    scene.objects.push_back(*c.object);
+    std::vector<HitGpu> hits = traceClosest(sharedContext(), scene, {toGpu(c.ray)});
+    auto ref = referenceIntersect(*c.object, c.ray);
+    INFO("capped " << c.object->capped << ", expected t " << c.expected_t);
+    if (c.expected_t == 0) {
+      CHECK(hits[0].prim == -1);
+      CHECK(!ref);
+    } else {
+      REQUIRE(hits[0].prim == 0);
+      CHECK(hits[0].t == Approx(c.expected_t).epsilon(1e-6));
+      REQUIRE(ref);
+      CHECK(*ref == Approx(c.expected_t).epsilon(1e-12));
+    }
+  }
 }
 
 TEST_CASE("closest hit picks the nearest of several objects", "[kernels][intersect]") {

@@ -37,6 +37,19 @@ Object scaledAboutCentre(const Object& object, double s) {
       for (Vec3& v : o.vertices) v = c + (v - c) * s;
       break;
     }
+    case ObjectType::Quadric: {
+      // The solid {Q <= 0} grows as J falls, by (s - 1) of the largest
+      // coefficient; the clip box scales about its centre.
+      double k = 0;
+      for (int i = 0; i < 10; ++i) k = std::max(k, std::fabs(o.params[i]));
+      o.params[9] -= (s - 1) * k;
+      for (int a = 0; a < 3; ++a) {
+        double c = 0.5 * (o.params[10 + a] + o.params[13 + a]), h = 0.5 * (o.params[13 + a] - o.params[10 + a]);
+        o.params[10 + a] = c - h * s;
+        o.params[13 + a] = c + h * s;
+      }
+      break;
+    }
   }
   return o;
 }

@@ -78,6 +78,6 @@ void setSideDataOffset(ObjectGpu& g, int records);
 std::vector<std::string> objectKeys(std::initializer_list<const char*> own);
 
 // The kinds, each defined in its own file.
-extern const PrimitiveKind kSphereKind, kBoxKind, kPlaneKind, kTriangleKind;
+extern const PrimitiveKind kSphereKind, kBoxKind, kPlaneKind, kTriangleKind, kQuadricKind;
 
 }  // namespace prism

@@ -7,7 +7,8 @@
 namespace prism {
 
 const std::vector<const PrimitiveKind*>& primitiveKinds() {
-  static const std::vector<const PrimitiveKind*> kinds = {&kSphereKind, &kBoxKind, &kPlaneKind, &kTriangleKind};
+  static const std::vector<const PrimitiveKind*> kinds = {&kSphereKind, &kBoxKind, &kPlaneKind, &kTriangleKind,
+                                                             &kQuadricKind};
   return kinds;
 }
 
