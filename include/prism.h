@@ -126,6 +126,8 @@ PRISM_API void prismReleaseScene(PrismScene scene); /* NULL is a no-op */
 /* Warnings found while loading (unknown keys and the like), one per index. */
 PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* count);
 PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, const char** message);
+/* The scene's objects so far (the index the next object added will get). */
+PRISM_API PrismStatus prismGetSceneObjectCount(PrismScene scene, uint32_t* count);
 
 /* The camera (DESIGN.md: right-handed; pixel (i, j) with i to the right, j down
  * from the top row; one sample goes through the pixel centre). A pinhole unless
@@ -379,15 +381,28 @@ typedef enum PrismFirstHit {
   PRISM_FIRST_HIT_TRACE = 2
 } PrismFirstHit;
 
+/* The point-in-polygon test of polygons that name none (docs/scene-format.md,
+ * polygons): the crossing (Jordan curve) test, the radial (angle-sum) test, or
+ * the left-right test (convex polygons only: a render with a non-convex one
+ * fails with INVALID_ARGUMENT naming it). */
+typedef enum PrismInsideTest {
+  PRISM_INSIDE_CROSSING = 0,
+  PRISM_INSIDE_RADIAL = 1,
+  PRISM_INSIDE_LEFT_RIGHT = 2
+} PrismInsideTest;
+
 /* Parse a lower-case name ("auto", "none", "grid", "quincunx", "adaptive", "jitter",
  * "poisson", "random"; "box", "tent", "gaussian", "mitchell"; "auto", "zbuffer",
- * "trace"); the Name functions return it, or NULL for an unknown value. */
+ * "trace"; "crossing", "radial", "left-right"); the Name functions return it, or
+ * NULL for an unknown value. */
 PRISM_API PrismStatus prismParseAa(const char* name, PrismAa* aa);
 PRISM_API const char* prismAaName(PrismAa aa);
 PRISM_API PrismStatus prismParseFilter(const char* name, PrismFilter* filter);
 PRISM_API const char* prismFilterName(PrismFilter filter);
 PRISM_API PrismStatus prismParseFirstHit(const char* name, PrismFirstHit* first_hit);
 PRISM_API const char* prismFirstHitName(PrismFirstHit first_hit);
+PRISM_API PrismStatus prismParseInsideTest(const char* name, PrismInsideTest* inside_test);
+PRISM_API const char* prismInsideTestName(PrismInsideTest inside_test);
 
 typedef struct PrismRenderOptions {
   size_t struct_size;  /* sizeof(PrismRenderOptions); set by prismGetRenderOptions */
@@ -404,6 +419,7 @@ typedef struct PrismRenderOptions {
   float aa_threshold;  /* adaptive: corner colours differing by more than this split a square (default 0.1) */
   uint32_t aa_max_level; /* adaptive: most subdivisions of a pixel's side, 0..8 (default 2) */
   uint32_t profile;    /* nonzero: time each kernel on the device (prismGetKernelTime); 0 by default */
+  uint32_t inside_test; /* a PrismInsideTest: for polygons that name none */
 } PrismRenderOptions;
 
 /* Fills `options` with the scene's own settings (film and render blocks). */

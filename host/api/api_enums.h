@@ -17,11 +17,12 @@ int enumValue(const E& e) {
   return v;
 }
 
-// The name of each PrismAccel, PrismAa, PrismFilter and PrismFirstHit value, or
-// NULL for a value that is none of them.
+// The name of each PrismAccel, PrismAa, PrismFilter, PrismFirstHit and
+// PrismInsideTest value, or NULL for a value that is none of them.
 const char* accelNameOf(std::int64_t value);
 const char* aaNameOf(std::int64_t value);
 const char* filterNameOf(std::int64_t value);
 const char* firstHitNameOf(std::int64_t value);
+const char* insideTestNameOf(std::int64_t value);
 // The channels of a PrismAov value; false for a value that is none.
 bool aovChannelsOf(std::int64_t value, std::uint32_t* channels);

@@ -54,6 +54,10 @@ static_assert(PRISM_AA_NONE == static_cast<int>(AaMode::None) + 1 && PRISM_AA_GR
                   PRISM_AA_POISSON == static_cast<int>(AaMode::Poisson) + 1 &&
                   PRISM_AA_RANDOM == static_cast<int>(AaMode::Random) + 1,
               "PrismAa is AaMode + 1");
+static_assert(PRISM_INSIDE_CROSSING == static_cast<int>(InsideTest::Crossing) &&
+                  PRISM_INSIDE_RADIAL == static_cast<int>(InsideTest::Radial) &&
+                  PRISM_INSIDE_LEFT_RIGHT == static_cast<int>(InsideTest::LeftRight),
+              "PrismInsideTest is InsideTest");
 static_assert(PRISM_FILTER_BOX == static_cast<int>(FilterKind::Box) &&
                   PRISM_FILTER_TENT == static_cast<int>(FilterKind::Tent) &&
                   PRISM_FILTER_GAUSSIAN == static_cast<int>(FilterKind::Gaussian) &&
@@ -81,6 +85,9 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   if (!first_hit)
     throw std::invalid_argument("render options: unknown first_hit value " + std::to_string(o.first_hit));
   r.first_hit = parseFirstHitMode(first_hit);
+  const char* inside_test = insideTestNameOf(o.inside_test);
+  if (!inside_test || !tryParseInsideTest(inside_test, &r.inside_test))
+    throw std::invalid_argument("render options: unknown inside_test value " + std::to_string(o.inside_test));
   r.aa_threshold = o.aa_threshold;
   r.aa_max_level = static_cast<int>(std::min<uint32_t>(o.aa_max_level, std::numeric_limits<int>::max()));
   r.profile = o.profile != 0;
@@ -253,6 +260,12 @@ PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* coun
   return PRISM_OK;
 }
 
+PRISM_API PrismStatus prismGetSceneObjectCount(PrismScene scene, uint32_t* count) {
+  PRISM_REQUIRE(scene && count, "prismGetSceneObjectCount: NULL argument");
+  *count = static_cast<uint32_t>(scene->scene.objects.size());
+  return PRISM_OK;
+}
+
 PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, const char** message) {
   PRISM_REQUIRE(scene && message, "prismGetSceneWarning: NULL argument");
   PRISM_REQUIRE(index < scene->scene.warnings.size(), "prismGetSceneWarning: index out of range");
@@ -276,6 +289,7 @@ PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions
   options->aa = r.aa ? static_cast<uint32_t>(*r.aa) + 1 : static_cast<uint32_t>(PRISM_AA_AUTO);
   options->filter = static_cast<uint32_t>(r.filter);
   options->first_hit = toC(r.first_hit);
+  options->inside_test = static_cast<uint32_t>(r.inside_test);
   options->aa_threshold = static_cast<float>(r.aa_threshold);
   options->aa_max_level = static_cast<uint32_t>(r.aa_max_level);
   return PRISM_OK;

@@ -1,5 +1,5 @@
 // The C API's names of the anti-aliasing modes, reconstruction filters and
-// first-hit modes (include/prism.h).
+// first-hit modes and the polygons' inside tests (include/prism.h).
 #include <cstring>
 #include <string>
 
@@ -27,6 +27,8 @@ const Named<PrismFilter> kFilterNames[] = {{"box", PRISM_FILTER_BOX},
                                            {"mitchell", PRISM_FILTER_MITCHELL}};
 const Named<PrismFirstHit> kFirstHitNames[] = {
     {"auto", PRISM_FIRST_HIT_AUTO}, {"zbuffer", PRISM_FIRST_HIT_ZBUFFER}, {"trace", PRISM_FIRST_HIT_TRACE}};
+const Named<PrismInsideTest> kInsideTestTable[] = {
+    {"crossing", PRISM_INSIDE_CROSSING}, {"radial", PRISM_INSIDE_RADIAL}, {"left-right", PRISM_INSIDE_LEFT_RIGHT}};
 
 template <typename E, size_t N>
 PrismStatus parse(const Named<E> (&table)[N], const char* function, const char* what, const char* name, E* out) {
@@ -54,6 +56,7 @@ const char* nameOf(const Named<E> (&table)[N], std::int64_t value) {
 const char* aaNameOf(std::int64_t value) { return nameOf(kAaNames, value); }
 const char* filterNameOf(std::int64_t value) { return nameOf(kFilterNames, value); }
 const char* firstHitNameOf(std::int64_t value) { return nameOf(kFirstHitNames, value); }
+const char* insideTestNameOf(std::int64_t value) { return nameOf(kInsideTestTable, value); }
 
 extern "C" {
 
@@ -71,5 +74,12 @@ PRISM_API PrismStatus prismParseFirstHit(const char* name, PrismFirstHit* first_
   return parse(kFirstHitNames, "prismParseFirstHit", "first-hit mode", name, first_hit);
 }
 PRISM_API const char* prismFirstHitName(PrismFirstHit first_hit) { return firstHitNameOf(enumValue(first_hit)); }
+
+PRISM_API PrismStatus prismParseInsideTest(const char* name, PrismInsideTest* inside_test) {
+  return parse(kInsideTestTable, "prismParseInsideTest", "inside test", name, inside_test);
+}
+PRISM_API const char* prismInsideTestName(PrismInsideTest inside_test) {
+  return insideTestNameOf(enumValue(inside_test));
+}
 
 }  // extern "C"

@@ -136,6 +136,10 @@ Speed:
                     rays through the --accel structure), or auto (default: zbuffer
                     whenever the camera allows it: no aperture, no shutter
                     interval). Both give the same image.
+  --inside-test T   the point-in-polygon test of polygons that name none:
+                    crossing (default, the Jordan curve test), radial (the
+                    angle-sum test) or left-right (convex polygons only). All
+                    three give the same image.
 
 Device:
   --device D        the OpenCL device: an index from 'prism devices', 'cpu', 'gpu', or

@@ -17,7 +17,7 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--camera-up", "", true}, {"--fov", "", true},    {"--aperture", "", true},
     {"--focus-distance", "", true}, {"--stats", "", false},
     {"--aa", "", true},        {"--filter", "", true},    {"--aa-threshold", "", true},
-    {"--aa-max-level", "", true}, {"--first-hit", "", true},
+    {"--aa-max-level", "", true}, {"--first-hit", "", true}, {"--inside-test", "", true},
 };
 
 // The same list as the library's image writer, checked here so that a typo in -o
@@ -117,6 +117,12 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
     if (prismParseFirstHit(name->c_str(), &first_hit) != PRISM_OK)
       throw UsageError("--first-hit: unknown mode '" + *name + "' (expected zbuffer, trace or auto)");
     request.first_hit = first_hit;
+  }
+  if (const auto name = parsed.text("--inside-test")) {
+    PrismInsideTest inside_test;
+    if (prismParseInsideTest(name->c_str(), &inside_test) != PRISM_OK)
+      throw UsageError("--inside-test: unknown test '" + *name + "' (expected crossing, radial or left-right)");
+    request.inside_test = inside_test;
   }
   request.camera_pos = parsed.triple("--camera-pos");
   request.camera_look = parsed.triple("--camera-look");

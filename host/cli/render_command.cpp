@@ -67,6 +67,7 @@ std::vector<Override> overridesOf(const RenderRequest& request) {
   add(r.aa_threshold.has_value(), "--aa-threshold", [&r](PrismRenderOptions& o) { o.aa_threshold = *r.aa_threshold; });
   add(r.aa_max_level.has_value(), "--aa-max-level", [&r](PrismRenderOptions& o) { o.aa_max_level = *r.aa_max_level; });
   add(r.first_hit.has_value(), "--first-hit", [&r](PrismRenderOptions& o) { o.first_hit = *r.first_hit; });
+  add(r.inside_test.has_value(), "--inside-test", [&r](PrismRenderOptions& o) { o.inside_test = *r.inside_test; });
   add(r.stats, "--stats", [](PrismRenderOptions& o) { o.profile = 1; });
   return out;
 }

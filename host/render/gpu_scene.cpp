@@ -31,12 +31,12 @@ void put4(float* dst, const Vec3& v, double w = 0) {
 
 // An analytic object's record, by its kind; parameters that do not fit the
 // record go to `side`.
-ObjectGpu flattenObject(const Object& ob, std::vector<float>& side) {
+ObjectGpu flattenObject(const Object& ob, const FlattenSettings& settings, std::vector<float>& side) {
   const PrimitiveKind& kind = primitiveKind(ob.type);
   ObjectGpu g{};
   g.type = kind.gpu_type;
   g.material = ob.material;
-  kind.flatten(ob, g, side);
+  kind.flatten(ob, settings, g, side);
   g.has_transform = ob.transform.isIdentity() ? 0 : 1;
   Transform inv = g.has_transform ? ob.transform.inverse() : Transform::identity();
   for (int r = 0; r < 3; ++r)
@@ -225,14 +225,21 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   for (const Object& ob : scene.objects) total += ob.type == ObjectType::Mesh ? ob.mesh->triangleCount() : 1;
   g.objects.reserve(total);
   std::vector<std::pair<std::size_t, std::vector<float>>> sides;  // (primitive, its side data)
-  for (const Object& ob : scene.objects) {
+  FlattenSettings settings;
+  settings.inside_test = static_cast<int>(options.inside_test);
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& ob = scene.objects[i];
     const bool moves = shutter && ob.moving;
     const std::size_t first = g.objects.size();
     if (ob.type == ObjectType::Mesh) {
       appendMesh(ob, g.objects, moves);
     } else {
       std::vector<float> side;
-      g.objects.push_back(flattenObject(ob, side));
+      try {
+        g.objects.push_back(flattenObject(ob, settings, side));
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("objects[" + std::to_string(i) + "]: " + e.what());
+      }
       if (!side.empty()) sides.emplace_back(first, std::move(side));
     }
     if (!moves) continue;

@@ -39,6 +39,9 @@ RenderOptions RenderOptions::fromScene(const Scene& scene) {
   o.aa_threshold = scene.film.aa_threshold;
   o.aa_max_level = scene.film.aa_max_level;
   o.first_hit = parseFirstHitMode(scene.render.first_hit);
+  if (!tryParseInsideTest(scene.render.inside_test, &o.inside_test))
+    throw std::invalid_argument("unknown inside test '" + scene.render.inside_test + "' (expected " +
+                                kInsideTestNames + ")");
   return o;
 }
 

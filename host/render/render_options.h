@@ -8,6 +8,7 @@
 
 #include "accel/accel_structure.h"
 #include "render/sampler.h"
+#include "scene/primitives/inside_test.h"
 #include "scene/scene.h"
 
 namespace prism {
@@ -35,6 +36,7 @@ struct RenderOptions {
   double aa_threshold = 0.1;            // adaptive: corner contrast that splits a square
   int aa_max_level = 2;                 // adaptive: most splits of a pixel's side
   FirstHitMode first_hit = FirstHitMode::Auto;
+  InsideTest inside_test = InsideTest::Crossing;  // for polygons that name none
   // Time every kernel launch on the device (RenderStats::kernels); each launch
   // then keeps an event until the render ends.
   bool profile = false;

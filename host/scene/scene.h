@@ -55,6 +55,7 @@ struct RenderSettings {
   unsigned long long seed = 0;
   std::string accel = "auto";  // spatial index: auto, bvh, octree, bsp or none
   std::string first_hit = "auto";  // primary visibility: auto, zbuffer or trace
+  std::string inside_test = "crossing";  // polygons that name none: crossing, radial or left-right
 };
 
 enum class LightType { Point = 0, Quad = 1, Disk = 2, Sphere = 3 };
@@ -75,7 +76,7 @@ struct Light {
   int samples = 1;
 };
 
-enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4, Quadric = 5 };
+enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4, Quadric = 5, Polygon = 6 };
 
 struct Object {
   ObjectType type = ObjectType::Sphere;
@@ -93,9 +94,11 @@ struct Object {
   Vec3 point, normal{0, 1, 0};
   Vec3 vertices[3];
   // Parameters of the kinds that lay them out themselves (scene/primitives/):
-  // quadric: coefficients A..J, then the clip box's min and max.
+  // quadric: coefficients A..J, then the clip box's min and max; polygon: its
+  // vertices, xyz each.
   std::vector<double> params;
   bool capped = false;  // quadric: close the solid with the clip box's faces
+  std::string inside_test;  // polygon: its point-in-polygon test, or "" for render.inside_test
   // Mesh: its triangles (shared with other objects naming the same file), drawn
   // through `transform`; `material` is used for triangles whose file gives none,
   // or for all of them when `material_override` is set. The file's own materials

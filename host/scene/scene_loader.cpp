@@ -18,6 +18,7 @@
 #include "scene/camera_check.h"
 #include "scene/json_reader.h"
 #include "scene/light_check.h"
+#include "scene/primitives/inside_test.h"
 #include "scene/primitives/primitive_kind.h"
 #include "scene/mesh_objects.h"
 #include <string>
@@ -181,7 +182,8 @@ class SceneParser : private JsonReader {
   }
 
   void parseRender(const Json& v, const std::string& path) {
-    checkObject(v, path, {"max_depth", "min_weight", "ambient", "background", "seed", "accel", "first_hit"});
+    checkObject(v, path,
+                {"max_depth", "min_weight", "ambient", "background", "seed", "accel", "first_hit", "inside_test"});
     RenderSettings& r = m_scene.render;
     if (const Json* p = find(v, "max_depth"))
       r.max_depth = int(integer(*p, member(path, "max_depth"), 0, kMaxDepth));
@@ -203,6 +205,13 @@ class SceneParser : private JsonReader {
       if (name != "auto" && name != "zbuffer" && name != "trace")
         fail(member(path, "first_hit"), "unknown first-hit mode '" + name + "' (expected auto, zbuffer, trace)");
       r.first_hit = name;
+    }
+    if (const Json* p = find(v, "inside_test")) {
+      const std::string name = string(*p, member(path, "inside_test"), std::string("a string (") + kInsideTestNames + ")");
+      InsideTest test;
+      if (!tryParseInsideTest(name, &test))
+        fail(member(path, "inside_test"), "unknown inside test '" + name + "' (expected " + kInsideTestNames + ")");
+      r.inside_test = name;
     }
   }
 

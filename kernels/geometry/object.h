@@ -11,6 +11,7 @@
 #include "geometry/box.h"
 #include "geometry/motion.h"
 #include "geometry/plane.h"
+#include "geometry/polygon.h"
 #include "geometry/quadric.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
@@ -73,6 +74,8 @@ inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, f
       *u = (float)face;
       return hit;
     }
+    case OBJECT_POLYGON:
+      return polygon_intersect(o, d, tmin, tmax, p, object_side_data(ob), t);
   }
   return false;
 }
@@ -110,6 +113,10 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
       if (want_uv) *uv = quadric_uv(p, object_side_data(ob), face);
       break;
     }
+    case OBJECT_POLYGON:
+      n = load3g(q);
+      if (want_uv) *uv = polygon_uv(q, p);
+      break;
     default:
       n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));
       *uv = (float2)(hit.u, hit.v);

@@ -9,6 +9,12 @@
 #define OBJECT_PLANE 2
 #define OBJECT_TRIANGLE 3
 #define OBJECT_QUADRIC 4
+#define OBJECT_POLYGON 5
+
+/* A polygon's point-in-polygon test (geometry/polygon.h). */
+#define POLYGON_CROSSING 0
+#define POLYGON_RADIAL 1
+#define POLYGON_LEFT_RIGHT 2
 
 /* A triangle whose world_to_object array holds unit vertex normals n0, n1, n2
  * (9 floats) to interpolate, instead of a matrix (triangles are stored in world
@@ -40,7 +46,10 @@ typedef struct ObjectGpu {
   int flags;    /* OBJECT_FLAG_* and, when moving, the motion record's offset; aligns the arrays */
   /* sphere: center xyz, radius; box: min xyz, max xyz; plane: point xyz, normal xyz;
    * triangle: v0 xyz, v1 xyz, v2 xyz (world space); quadric: coefficients A..J
-   * (scaled to a largest magnitude of 1), its clip box in side data. */
+   * (scaled to a largest magnitude of 1), its clip box in side data; polygon:
+   * unit normal xyz, plane offset, the two axes it is projected on, vertex
+   * count, inside test (POLYGON_*), orientation (+1 or -1) in the projection;
+   * its vertices (xyz each) in side data. */
   float p[12];
   /* Rows of the 3x4 world-to-object affine matrix. Object-space normals map back
    * with its transposed linear part. Smooth triangles: see OBJECT_FLAG_VERTEX_NORMALS. */

@@ -46,7 +46,7 @@ class RenderOptions(Structure):
     _fields_ = [("struct_size", c_size_t), ("width", c_uint32), ("height", c_uint32), ("spp", c_uint32),
                 ("max_depth", c_uint32), ("min_weight", c_float), ("seed", c_uint64), ("accel", c_uint32),
                 ("aa", c_uint32), ("filter", c_uint32), ("first_hit", c_uint32), ("aa_threshold", c_float),
-                ("aa_max_level", c_uint32), ("profile", c_uint32)]
+                ("aa_max_level", c_uint32), ("profile", c_uint32), ("inside_test", c_uint32)]
 
 
 class RenderStats(Structure):
@@ -92,6 +92,7 @@ _FUNCTIONS = {
     "prismNewScene": (Status, [POINTER(c_void_p)]),
     "prismReleaseScene": (None, [c_void_p]),
     "prismGetSceneWarningCount": (Status, [c_void_p, POINTER(c_uint32)]),
+    "prismGetSceneObjectCount": (Status, [c_void_p, POINTER(c_uint32)]),
     "prismGetSceneWarning": (Status, [c_void_p, c_uint32, POINTER(c_char_p)]),
     "prismGetCamera": (Status, [c_void_p, POINTER(Camera)]),
     "prismSetCamera": (Status, [c_void_p, POINTER(Camera)]),
@@ -110,6 +111,7 @@ _FUNCTIONS = {
     "prismParseAa": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismParseFilter": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismParseFirstHit": (Status, [c_char_p, POINTER(c_uint32)]),
+    "prismParseInsideTest": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismParseAov": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismGetAovChannels": (Status, [c_uint32, POINTER(c_uint32)]),
     "prismGetRenderOptions": (Status, [c_void_p, POINTER(RenderOptions)]),

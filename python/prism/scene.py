@@ -74,6 +74,13 @@ class Scene:
             out.append(text.value.decode("utf-8", "replace"))
         return out
 
+    @property
+    def object_count(self):
+        """The objects so far: the index the next object added gets."""
+        count = ctypes.c_uint32()
+        check(lib.prismGetSceneObjectCount(self._handle, ctypes.byref(count)))
+        return count.value
+
     # ---- building -------------------------------------------------------------
 
     def add(self, fragment):
@@ -171,6 +178,21 @@ class Scene:
         <= 0, closed by the box's faces. Presets (cylinder, cone, ...): `add({"objects": [...]})`."""
         return self._add_object("quadric", material, transform, transform_end, coefficients=coefficients,
                                 clip_min=clip_min, clip_max=clip_max, capped=capped)
+
+    def add_polygon(self, vertices, inside_test=None, material=None, transform=None, transform_end=None):
+        """Adds a planar polygon, convex or not (vertices: (N, 3), N >= 3, in order);
+        `inside_test`: "crossing", "radial" or "left-right" (convex only), else the
+        render's. Returns its object index."""
+        obj = {"type": "polygon", "vertices": np.asarray(vertices, dtype=np.float64).reshape(-1, 3).tolist()}
+        if inside_test is not None:
+            obj["inside_test"] = inside_test
+        if material is not None:
+            obj["material"] = material
+        for key, m in (("transform", transform), ("transform_end", transform_end)):
+            if m is not None:
+                obj[key] = {"matrix": [float(x) for x in _capi.matrix(m)]}
+        self.add({"objects": [obj]})
+        return self.object_count - 1
 
     def add_mesh(self, positions, triangles, material=None, transform=None):
         """Adds a triangle mesh from arrays (copied): positions (N, 3) float,

@@ -39,6 +39,8 @@ def whitted_dict():
             # (x - 2.5)^2 + (z - 1)^2 = 0.25, 0 <= y <= 1.5: a capped cylinder as a general quadric
             {"type": "quadric", "coefficients": [1, 0, 1, 0, 0, 0, -5, 0, -2, 7],
              "clip": {"min": [2, 0, 0.5], "max": [3, 1.5, 1.5]}, "capped": True, "material": "brushed"},
+            {"type": "polygon", "vertices": [[-3, 0.5, 1.5], [-2, 0.5, 1.5], [-2, 1.5, 1.5], [-2.5, 1, 1.5],
+                                             [-3, 1.5, 1.5]], "inside_test": "radial", "material": "glass"},
         ],
     }
 
@@ -59,13 +61,16 @@ def test_a_scene_built_in_code_renders_as_the_same_scene_as_json(ctx):
     assert built.add_triangle([[-3, 0, -2], [-1, 0, -2], [-2, 2, -2]], material="glass") == 3
     assert built.add_quadric([1, 0, 1, 0, 0, 0, -5, 0, -2, 7], (2, 0, 0.5), (3, 1.5, 1.5), capped=True,
                              material="brushed") == 4
+    assert built.add_polygon([[-3, 0.5, 1.5], [-2, 0.5, 1.5], [-2, 1.5, 1.5], [-2.5, 1, 1.5], [-3, 1.5, 1.5]],
+                             inside_test="radial", material="glass") == 5
+    assert built.object_count == 6
     written = prism.Scene.from_json(whitted_dict())
     a = ctx.render(built, width=72, height=40, max_depth=6, aovs=("depth", "primid"))
     b = ctx.render(written, width=72, height=40, max_depth=6, aovs=("depth", "primid"))
     assert a.rgba.tobytes() == b.rgba.tobytes()
     assert a.aovs["depth"].tobytes() == b.aovs["depth"].tobytes()
     assert (a.aovs["primid"] == b.aovs["primid"]).all()
-    assert set(np.unique(a.aovs["primid"])) == {-1, 0, 1, 2, 3, 4}  # every object is seen, and the sky
+    assert set(np.unique(a.aovs["primid"])) == {-1, 0, 1, 2, 3, 4, 5}  # every object is seen, and the sky
 
 
 def test_depth_and_primid_match_the_cameras_closed_form(ctx):

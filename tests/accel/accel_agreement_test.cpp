@@ -207,8 +207,8 @@ TEST_CASE("all structures agree on a scene of every primitive kind", "[accel]") 
   checkScene(mixedScene(), 20000, 96, 100000);
 }
 
-TEST_CASE("all structures agree on rays aimed at each quadric, and the quadrics are hit", "[accel]") {
-  // The quadrics are small in the mixed scene; aim rays at each one's box.
+TEST_CASE("all structures agree on rays aimed at each quadric and polygon, and each is hit", "[accel]") {
+  // They are small in the mixed scene; aim rays at each one's box.
   AccelScene scene = mixedScene(300);
   const Aabb box = boundsOf(scene.objects);
   std::mt19937_64 rng(17);
@@ -216,7 +216,7 @@ TEST_CASE("all structures agree on rays aimed at each quadric, and the quadrics 
   std::vector<QueryRay> rays;
   std::vector<std::int32_t> quadrics;
   for (std::size_t i = 0; i < primitiveCount(scene.objects); ++i) {
-    if (scene.objects[i].type != OBJECT_QUADRIC) continue;
+    if (scene.objects[i].type != OBJECT_QUADRIC && scene.objects[i].type != OBJECT_POLYGON) continue;
     quadrics.push_back(static_cast<std::int32_t>(i));
     Aabb b;
     REQUIRE(objectBounds(scene.objects[i], &b));
@@ -229,13 +229,13 @@ TEST_CASE("all structures agree on rays aimed at each quadric, and the quadrics 
       rays.push_back(QueryRay{o[0], o[1], o[2], 0, t[0] - o[0], t[1] - o[1], t[2] - o[2], INFINITY});
     }
   }
-  REQUIRE(quadrics.size() == 7);
+  REQUIRE(quadrics.size() == 7 + 3);
   RayQueryEngine none(sharedContext(), scene.objects, AccelKind::None, scene.materials);
   const std::vector<HitGpu> ref = none.intersect(rays);
   for (std::int32_t q : quadrics) {
     std::size_t hits = 0;
     for (const HitGpu& h : ref) hits += h.prim == q;
-    INFO("quadric " << q);
+    INFO("object " << q);
     CHECK(hits >= 5);
   }
   for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {

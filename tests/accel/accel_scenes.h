@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <random>
 #include <string>
@@ -42,18 +43,19 @@ inline MaterialGpu materialWithTransmit(float transmit) {
   return m;
 }
 
-// Appends the quadrics of a scene-format objects array (their records, then
-// their data records after every primitive), through the kind's own flatten.
-inline void appendQuadrics(std::vector<ObjectGpu>& objects, const std::string& objects_json,
+// Appends the objects of a scene-format objects array (their records, then
+// their data records after every primitive), through each kind's own flatten.
+inline void appendFromJson(std::vector<ObjectGpu>& objects, const std::string& objects_json,
                            const std::vector<int>& materials) {
-  Scene scene = parseScene(R"({"objects": )" + objects_json + "}", "quadrics");
+  Scene scene = parseScene(R"({"objects": )" + objects_json + "}", "objects");
   std::vector<std::vector<float>> sides;
   const std::size_t first = objects.size();
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& o = scene.objects[i];
-    ObjectGpu g = identityObject(OBJECT_QUADRIC, materials[i % materials.size()]);
+    const PrimitiveKind& kind = primitiveKind(o.type);
+    ObjectGpu g = identityObject(kind.gpu_type, materials[i % materials.size()]);
     sides.emplace_back();
-    primitiveKind(o.type).flatten(o, g, sides.back());
+    kind.flatten(o, FlattenSettings{}, g, sides.back());
     if (!o.transform.isIdentity()) {
       const Transform inv = o.transform.inverse();
       for (int r = 0; r < 3; ++r)
@@ -63,14 +65,18 @@ inline void appendQuadrics(std::vector<ObjectGpu>& objects, const std::string& o
     objects.push_back(g);
   }
   for (std::size_t i = 0; i < sides.size(); ++i) {
-    ObjectDataGpu record{};
-    record.type = OBJECT_DATA;
-    record.size = static_cast<int>(sides[i].size());
-    for (std::size_t k = 0; k < sides[i].size(); ++k) record.words[k] = sides[i][k];
-    ObjectGpu slot;
-    std::memcpy(&slot, &record, sizeof slot);
-    setSideDataOffset(objects[first + i], static_cast<int>(objects.size() - (first + i)));
-    objects.push_back(slot);
+    if (sides[i].empty()) continue;
+    // A header record, then the floats running on through whole records.
+    constexpr std::size_t kHeader = offsetof(ObjectDataGpu, words) / sizeof(float);
+    constexpr std::size_t kSlot = sizeof(ObjectGpu) / sizeof(float);
+    const std::size_t at = objects.size();
+    objects.resize(at + (kHeader + sides[i].size() + kSlot - 1) / kSlot, ObjectGpu{});
+    ObjectDataGpu header{};
+    header.type = OBJECT_DATA;
+    header.size = static_cast<int>(sides[i].size());
+    std::memcpy(&objects[at], &header, offsetof(ObjectDataGpu, words));
+    std::memcpy(reinterpret_cast<float*>(&objects[at]) + kHeader, sides[i].data(), sides[i].size() * sizeof(float));
+    setSideDataOffset(objects[first + i], static_cast<int>(at - (first + i)));
   }
 }
 
@@ -79,7 +85,8 @@ inline void appendQuadrics(std::vector<ObjectGpu>& objects, const std::string& o
 // and rotated spheres and boxes, two planes, degenerate triangles,
 // axis-aligned triangles lying exactly on x = 0.5, y = 0.5, z = 0.5 (the
 // centre planes of a unit cube cell), and quadrics open and capped, placed by
-// transforms or by their coefficients. Materials 1 and 2 are semitransparent.
+// transforms or by their coefficients, and polygons (one on x, y, z = 0.5
+// planes' neighbourhood, one convex, one not). Materials 1 and 2 are semitransparent.
 inline AccelScene mixedScene(std::size_t soup = 1500) {
   AccelScene s;
   s.name = "mixed";
@@ -175,8 +182,8 @@ inline AccelScene mixedScene(std::size_t soup = 1500) {
       }
       s.objects.push_back(g);
     }
-  // Quadrics last: their data records close the array.
-  appendQuadrics(s.objects, R"([
+  // Quadrics and polygons last: their data records close the array.
+  appendFromJson(s.objects, R"([
       {"type": "cylinder", "radius": 0.08, "height": 0.3, "transform": {"translate": [0.2, 0.6, 0.8]}},
       {"type": "cylinder", "radius": 0.06, "height": 0.4, "capped": false,
        "transform": [{"rotate": {"axis": [1, 0, 1], "angle": 50}}, {"translate": [0.5, 0.5, 0.5]}]},
@@ -186,7 +193,13 @@ inline AccelScene mixedScene(std::size_t soup = 1500) {
       {"type": "quadric", "coefficients": [1, 1, 1, 0, 0, 0, -1, -1.2, -0.8, 0.7675], "capped": true,
        "clip": {"min": [0.45, 0.55, 0.35], "max": [0.55, 0.65, 0.45]}},
       {"type": "quadric", "coefficients": [5, -5, 0, 0, 0, 0, -5, 2, -1, 1.8],
-       "clip": {"min": [0.4, 0.1, 0.6], "max": [0.6, 0.3, 0.9]}}])",
+       "clip": {"min": [0.4, 0.1, 0.6], "max": [0.6, 0.3, 0.9]}},
+      {"type": "polygon", "vertices": [[0.1, 0.9, 0.1], [0.4, 0.9, 0.1], [0.4, 0.9, 0.2], [0.2, 0.9, 0.2],
+                                       [0.2, 0.9, 0.35], [0.1, 0.9, 0.35]]},
+      {"type": "polygon", "vertices": [[0.6, 0.1, 0.1], [0.9, 0.15, 0.23], [0.85, 0.4, 0.26], [0.7, 0.45, 0.21],
+                                       [0.55, 0.3, 0.12]], "inside_test": "left-right"},
+      {"type": "polygon", "vertices": [[0.3, 0.5, 0.5], [0.5, 0.5, 0.5], [0.5, 0.7, 0.5], [0.4, 0.6, 0.5],
+                                       [0.3, 0.7, 0.5]], "inside_test": "radial"}])",
                 {0, 1, 2});
   return s;
 }

@@ -103,6 +103,8 @@ int main(int argc, char** argv) {
   BAD(prismGetSceneWarningCount(NULL, &count), "prismGetSceneWarningCount");
   BAD(prismGetSceneWarningCount(scene, NULL), "prismGetSceneWarningCount");
   CHECK_OK(prismGetSceneWarningCount(scene, &count));
+  BAD(prismGetSceneObjectCount(NULL, &count), "prismGetSceneObjectCount");
+  BAD(prismGetSceneObjectCount(scene, NULL), "prismGetSceneObjectCount");
   BAD(prismGetSceneWarning(NULL, 0, &text), "prismGetSceneWarning");
   BAD(prismGetSceneWarning(scene, 0, NULL), "prismGetSceneWarning");
   EXPECT(prismGetSceneWarning(scene, count, &text), PRISM_ERROR_INVALID_ARGUMENT, "prismGetSceneWarning");

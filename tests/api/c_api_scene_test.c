@@ -228,6 +228,11 @@ static int buildInCode(PrismScene* out) {
   o.material = "brushed";
   CHECK_OK(prismAddObject(scene, &o, &index));
   CHECK(index == 5);
+  {
+    uint32_t count = 0;
+    CHECK_OK(prismGetSceneObjectCount(scene, &count));
+    CHECK(count == 6);
+  }
   *out = scene;
   return 0;
 }

@@ -111,7 +111,7 @@ TEST_CASE("a sphere moving across the view covers each pixel for the time the in
   CHECK(std::fabs(ramp_pixels - 2 * 2 * kR * pixels_per_unit) < 6);
 }
 
-TEST_CASE("every structure finds moving spheres, boxes, triangles, planes and quadrics where brute force does", "[render][distributed][motion][accel]") {
+TEST_CASE("every structure finds moving spheres, boxes, triangles, planes, quadrics and polygons where brute force does", "[render][distributed][motion][accel]") {
   const char* json = R"({
     "camera": {"position": [0, 2, 9], "look_at": [0, 0.5, 0], "fov": 40, "shutter": [0, 1]},
     "film": {"width": 48, "height": 36, "spp": 4},
@@ -129,7 +129,9 @@ TEST_CASE("every structure finds moving spheres, boxes, triangles, planes and qu
       {"type": "triangle", "vertices": [[-1, 0.1, -1], [1, 0.1, -1], [0, 1.5, -1]],
        "transform_end": {"translate": [0, 1, 0]}},
       {"type": "cylinder", "radius": 0.3, "height": 0.8, "material": "m", "transform": {"translate": [-1.5, 0, 1]},
-       "transform_end": [{"rotate": {"axis": [0, 0, 1], "angle": 60}}, {"translate": [-1, 0.3, 1]}]}
+       "transform_end": [{"rotate": {"axis": [0, 0, 1], "angle": 60}}, {"translate": [-1, 0.3, 1]}]},
+      {"type": "polygon", "vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0.5, 0.4, 0], [0, 1, 0]], "material": "m",
+       "transform": {"translate": [2, 0.2, 1]}, "transform_end": {"translate": [2.5, 0.8, 1]}}
     ]
   })";
   const Scene scene = parseScene(json, "moving.json");

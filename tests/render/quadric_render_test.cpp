@@ -81,7 +81,7 @@ TEST_CASE("a quadric sphere renders as the sphere primitive: depth, normal and c
   }
 }
 
-TEST_CASE("Z-buffer and traced primary rays agree on every quadric preset", "[render][quadric][firsthit]") {
+TEST_CASE("Z-buffer and traced primary rays agree on every quadric preset and a polygon", "[render][quadric][firsthit]") {
   const Scene scene = parseScene(zooScene(R"(
       {"type": "cylinder", "radius": 0.4, "height": 1.2, "material": "clay", "transform": {"translate": [-2, 0, 0]}},
       {"type": "cone", "radius": 0.5, "height": 1.3, "material": "mirror", "transform": {"translate": [-1, 0, 0]}},
@@ -92,7 +92,9 @@ TEST_CASE("Z-buffer and traced primary rays agree on every quadric preset", "[re
       {"type": "hyperboloid", "sheets": 2, "vertex": 0.2, "top_radius": 0.4, "height": 0.6, "material": "clay",
        "transform": [{"rotate": {"axis": [0, 0, 1], "angle": 90}}, {"translate": [0, 0.5, 1.5]}]},
       {"type": "quadric", "coefficients": [1, -1, 0, 0, 0, 0, 0, 0, -1, 0], "material": "clay",
-       "clip": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]}, "transform": {"translate": [-1.5, 0.6, 1.5]}})"),
+       "clip": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]}, "transform": {"translate": [-1.5, 0.6, 1.5]}},
+      {"type": "polygon", "vertices": [[1, 0.2, 1.2], [2, 0.2, 1.2], [2, 1.2, 1.2], [1.5, 0.6, 1.2], [1, 1.2, 1.2]],
+       "material": "mirror"})"),
                                  "zoo");
   RenderOptions zopt = RenderOptions::fromScene(scene), topt = zopt;
   zopt.first_hit = FirstHitMode::ZBuffer;

@@ -19,6 +19,11 @@
 
 namespace prism {
 
+// Render-wide settings some kinds' device records depend on.
+struct FlattenSettings {
+  int inside_test = POLYGON_CROSSING;  // for polygons that name none
+};
+
 struct PrimitiveKind {
   ObjectType type;
   int gpu_type;  // OBJECT_* (kernels/shared/object_gpu.h)
@@ -40,7 +45,8 @@ struct PrimitiveKind {
 
   // The device record: p[] (and flags), with parameters that do not fit p[]
   // appended to `side` (placed in a data record, kernels/shared/object_gpu.h).
-  void (*flatten)(const Object& o, ObjectGpu& g, std::vector<float>& side);
+  // Throws std::invalid_argument when the settings do not suit the object.
+  void (*flatten)(const Object& o, const FlattenSettings& settings, ObjectGpu& g, std::vector<float>& side);
   // Object-space box of the record's shape, in double; false: unbounded (a
   // plane) or not finite. `side` is the record's side data (or null).
   bool (*local_bounds)(const ObjectGpu& g, const float* side, double lo[3], double hi[3]);
@@ -78,6 +84,6 @@ void setSideDataOffset(ObjectGpu& g, int records);
 std::vector<std::string> objectKeys(std::initializer_list<const char*> own);
 
 // The kinds, each defined in its own file.
-extern const PrimitiveKind kSphereKind, kBoxKind, kPlaneKind, kTriangleKind, kQuadricKind;
+extern const PrimitiveKind kSphereKind, kBoxKind, kPlaneKind, kTriangleKind, kQuadricKind, kPolygonKind;
 
 }  // namespace prism

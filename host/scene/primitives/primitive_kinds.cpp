@@ -8,7 +8,7 @@ namespace prism {
 
 const std::vector<const PrimitiveKind*>& primitiveKinds() {
   static const std::vector<const PrimitiveKind*> kinds = {&kSphereKind, &kBoxKind, &kPlaneKind, &kTriangleKind,
-                                                             &kQuadricKind};
+                                                             &kQuadricKind, &kPolygonKind};
   return kinds;
 }
 
