@@ -109,6 +109,7 @@ int MeshBuilder::addFace(void* host, const uint32_t* indices, uint32_t corners, 
       m.triangle_materials.push_back(material);
     }
     ++m.face_count;
+    m.face_corners.push_back(corners);
     return 0;
   });
 }

@@ -32,6 +32,8 @@ static_assert(sizeof(CameraGpu) == 176 && offsetof(CameraGpu, width) == 64 && of
               "CameraGpu layout");
 static_assert(sizeof(ContributionGpu) == 32 && offsetof(ContributionGpu, pixel) == 16, "ContributionGpu layout");
 static_assert(sizeof(SurfaceGpu) == 112 && offsetof(SurfaceGpu, material) == 80, "SurfaceGpu layout");
-static_assert(sizeof(ObjectDataGpu) == sizeof(ObjectGpu) && offsetof(ObjectDataGpu, words) == 16, "ObjectDataGpu layout");
+static_assert(sizeof(ObjectDataGpu) == sizeof(ObjectGpu) &&
+                  offsetof(ObjectDataGpu, words) == OBJECT_DATA_HEADER_FLOATS * sizeof(float),
+              "ObjectDataGpu layout");
 static_assert(sizeof(MotionGpu) == sizeof(ObjectGpu) && offsetof(MotionGpu, translate1) == 60,
               "a MotionGpu takes one ObjectGpu slot");

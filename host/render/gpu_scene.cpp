@@ -11,6 +11,7 @@
 
 #include "kernels/shared/motion_gpu.h"
 #include "scene/motion.h"
+#include "scene/primitives/polygon_shape.h"
 #include "scene/primitives/primitive_kind.h"
 
 namespace prism {
@@ -63,8 +64,11 @@ std::size_t appendSideData(const std::vector<float>& side, std::vector<ObjectGpu
 Vec3 vertexAt(const std::vector<float>& xyz, std::uint32_t i) { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
 
 // One TRIANGLE record per mesh triangle, in file order, in world space (in object
-// space when the mesh moves: the kernels transform rays at their time instead).
-void appendMesh(const Object& ob, std::vector<ObjectGpu>& out, bool moving) {
+// space when the mesh moves: the kernels transform rays at their time instead);
+// with polygon faces, one POLYGON record (its vertices into `sides`) for each
+// of them instead of its triangles.
+void appendMesh(const Object& ob, const FlattenSettings& settings, std::vector<ObjectGpu>& out,
+                std::vector<std::pair<std::size_t, std::vector<float>>>& sides, bool moving) {
   const TriangleMesh& mesh = *ob.mesh;
   const bool identity = ob.transform.isIdentity() || moving;
   std::vector<Vec3> world(mesh.vertexCount());
@@ -87,11 +91,14 @@ void appendMesh(const Object& ob, std::vector<ObjectGpu>& out, bool moving) {
       world_normals[v] = len > 0 ? w / len : w;
     }
   }
-  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+  auto material = [&](std::size_t t) {
+    const int file_material = mesh.triangle_materials.empty() ? -1 : mesh.triangle_materials[t];
+    return ob.material_override || file_material < 0 ? ob.material : ob.mesh_material_offset + file_material;
+  };
+  auto appendTriangle = [&](std::size_t t) {
     ObjectGpu g{};
     g.type = OBJECT_TRIANGLE;
-    int file_material = mesh.triangle_materials.empty() ? -1 : mesh.triangle_materials[t];
-    g.material = ob.material_override || file_material < 0 ? ob.material : ob.mesh_material_offset + file_material;
+    g.material = material(t);
     for (int k = 0; k < 3; ++k) {
       std::uint32_t v = mesh.indices[3 * t + k];
       put3(g.p + 3 * k, world[v]);
@@ -99,6 +106,30 @@ void appendMesh(const Object& ob, std::vector<ObjectGpu>& out, bool moving) {
     }
     g.flags = smooth ? OBJECT_FLAG_VERTEX_NORMALS : 0;
     out.push_back(g);
+  };
+  if (ob.polygon_faces.empty()) {
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) appendTriangle(t);
+    return;
+  }
+  // Faces kept as polygons (flat: vertex normals are for triangles), the rest
+  // as their fan of triangles, in file order.
+  std::size_t t = 0;
+  for (std::size_t f = 0; f < ob.polygon_faces.size(); ++f) {
+    const std::uint32_t corners = mesh.face_corners[f];
+    if (ob.polygon_faces[f]) {
+      std::vector<Vec3> verts = {world[mesh.indices[3 * t]]};
+      for (std::uint32_t k = 0; k + 2 < corners; ++k) verts.push_back(world[mesh.indices[3 * (t + k) + 1]]);
+      verts.push_back(world[mesh.indices[3 * (t + corners - 3) + 2]]);
+      ObjectGpu g{};
+      std::vector<float> side;
+      flattenPolygon(verts, static_cast<InsideTest>(settings.inside_test), g, side);
+      g.material = material(t);
+      sides.emplace_back(out.size(), std::move(side));
+      out.push_back(g);
+    } else {
+      for (std::uint32_t k = 0; k + 2 < corners; ++k) appendTriangle(t + k);
+    }
+    t += corners - 2;
   }
 }
 
@@ -232,7 +263,11 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
     const bool moves = shutter && ob.moving;
     const std::size_t first = g.objects.size();
     if (ob.type == ObjectType::Mesh) {
-      appendMesh(ob, g.objects, moves);
+      try {
+        appendMesh(ob, settings, g.objects, sides, moves);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("objects[" + std::to_string(i) + "]: " + e.what());
+      }
     } else {
       std::vector<float> side;
       try {

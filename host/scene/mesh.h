@@ -23,6 +23,9 @@ struct TriangleMesh {
   std::vector<std::int32_t> triangle_materials;
   std::vector<Material> materials;     // from the file (MTL), in file order
   std::size_t face_count = 0;          // faces as written, before triangulation
+  // Corners of each face in file order (its triangles are the next corners - 2
+  // of the fan); empty when every face is a triangle (meshes from arrays).
+  std::vector<std::uint32_t> face_corners;
   std::size_t degenerate_count = 0;    // zero-area triangles: kept, so numbering holds, but never hit
   std::vector<std::string> warnings;
 

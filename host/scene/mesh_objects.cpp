@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "scene/primitives/polygon_shape.h"
+
 namespace prism {
 
 Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth) {
@@ -24,6 +26,37 @@ Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const 
   }
   scene.objects.push_back(std::move(o));
   return scene.objects.back();
+}
+
+std::vector<Vec3> faceVertices(const TriangleMesh& mesh, std::size_t first_triangle, std::uint32_t corners) {
+  auto at = [&](std::size_t k) {
+    const std::uint32_t v = mesh.indices[k];
+    return Vec3{mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]};
+  };
+  // The fan (v0, vk, vk+1): v0, then each triangle's second corner, then the last one's third.
+  std::vector<Vec3> verts = {at(3 * first_triangle)};
+  for (std::uint32_t k = 0; k + 2 < corners; ++k) verts.push_back(at(3 * (first_triangle + k) + 1));
+  verts.push_back(at(3 * (first_triangle + corners - 3) + 2));
+  return verts;
+}
+
+std::vector<bool> polygonFacePlan(const TriangleMesh& mesh, std::size_t* kept_as_triangles) {
+  *kept_as_triangles = 0;
+  std::vector<bool> plan;
+  bool any = false;
+  std::size_t t = 0;
+  for (std::uint32_t corners : mesh.face_corners) {
+    bool polygon = false;
+    if (corners > 3) {
+      polygon = checkPolygon(faceVertices(mesh, t, corners)).problem.empty();
+      *kept_as_triangles += !polygon;
+    }
+    plan.push_back(polygon);
+    any = any || polygon;
+    t += corners - 2;
+  }
+  if (!any) plan.clear();
+  return plan;
 }
 
 Scene sceneForMesh(const SharedMesh& mesh) {

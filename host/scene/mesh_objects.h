@@ -2,6 +2,9 @@
 // whole "quick-render" scene around one mesh file.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "scene/scene.h"
 
 namespace prism {
@@ -10,6 +13,16 @@ namespace prism {
 // mesh, however many objects share it. `material` < 0 keeps the file's materials
 // (and the default material where the file gives none); otherwise it overrides them.
 Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth);
+
+// The vertices of face f, which starts at triangle `first_triangle` of the
+// mesh's fan, in file order.
+std::vector<Vec3> faceVertices(const TriangleMesh& mesh, std::size_t first_triangle, std::uint32_t corners);
+
+// Which faces of the mesh stay polygons when it is loaded with "polygons":
+// those of more than 3 corners that are planar, simple and of non-zero area
+// (scene/primitives/polygon_shape.h); *kept_as_triangles counts the other
+// faces of more than 3 corners. Empty for a mesh of triangles only.
+std::vector<bool> polygonFacePlan(const TriangleMesh& mesh, std::size_t* kept_as_triangles);
 
 // A scene that shows one mesh: a camera on the +Z side, a little above and to the
 // right of the bounding box's centre, looking at it, far enough for the bounding

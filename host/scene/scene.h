@@ -76,7 +76,7 @@ struct Light {
   int samples = 1;
 };
 
-enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4, Quadric = 5, Polygon = 6 };
+enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4, Quadric = 5, Polygon = 6, Polyhedron = 7 };
 
 struct Object {
   ObjectType type = ObjectType::Sphere;
@@ -95,7 +95,7 @@ struct Object {
   Vec3 vertices[3];
   // Parameters of the kinds that lay them out themselves (scene/primitives/):
   // quadric: coefficients A..J, then the clip box's min and max; polygon: its
-  // vertices, xyz each.
+  // vertices, xyz each; polyhedron: its planes, a b c d each.
   std::vector<double> params;
   bool capped = false;  // quadric: close the solid with the clip box's faces
   std::string inside_test;  // polygon: its point-in-polygon test, or "" for render.inside_test
@@ -107,10 +107,21 @@ struct Object {
   bool material_override = false;
   int mesh_material_offset = 0;
   bool smooth = false;  // interpolate vertex normals (when the file has them)
+  // Mesh: faces of more than 3 corners kept as polygons where polygon_faces[f]
+  // is set (planar, simple ones; the rest stay their fan of triangles). Empty:
+  // every face is triangles.
+  std::vector<bool> polygon_faces;
 
   // Primitives this object contributes to the scene's numbering (primid): one
-  // for an analytic object, one per triangle for a mesh.
-  std::size_t primitiveCount() const { return type == ObjectType::Mesh && mesh ? mesh->triangleCount() : 1; }
+  // for an analytic object, one per triangle for a mesh, or, with polygon
+  // faces, one per polygon and per triangle of the other faces.
+  std::size_t primitiveCount() const {
+    if (type != ObjectType::Mesh || !mesh) return 1;
+    if (polygon_faces.empty()) return mesh->triangleCount();
+    std::size_t n = 0;
+    for (std::size_t f = 0; f < polygon_faces.size(); ++f) n += polygon_faces[f] ? 1 : mesh->face_corners[f] - 2;
+    return n;
+  }
 };
 
 struct Scene {

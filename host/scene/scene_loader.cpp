@@ -356,6 +356,7 @@ class SceneParser : private JsonReader {
         Object& mesh = addMeshObject(m_scene, o.mesh, o.material_override ? o.material : -1, o.transform, o.smooth);
         mesh.moving = o.moving;
         mesh.transform_end = o.transform_end;
+        mesh.polygon_faces = std::move(o.polygon_faces);
       } else {
         m_scene.objects.push_back(std::move(o));
       }
@@ -370,7 +371,7 @@ class SceneParser : private JsonReader {
     Object o;
     const PrimitiveKind* kind = primitiveKindNamed(type);
     if (type == "mesh") {
-      checkObject(v, path, {"type", "material", "transform", "transform_end", "file", "smooth"});
+      checkObject(v, path, {"type", "material", "transform", "transform_end", "file", "smooth", "polygons"});
       o.type = ObjectType::Mesh;
       parseMesh(v, path, o);
     } else if (kind) {
@@ -388,7 +389,7 @@ class SceneParser : private JsonReader {
       o.moving = true;
       o.transform_end = parseTransform(*p, member(path, "transform_end"));
     }
-    if (kind) {
+    if (kind && o.type == kind->type) {  // (a polyhedron given by faces becomes a mesh)
       // Kinds the kernels keep in world space take a static transform into their geometry.
       if (kind->bake && !o.transform.isIdentity() && !o.moving) {
         kind->bake(o);
@@ -420,6 +421,16 @@ class SceneParser : private JsonReader {
     if (const Json* p = find(v, "smooth")) {
       if (!p->is_boolean()) expected(member(path, "smooth"), "true or false", *p);
       o.smooth = p->get<bool>();
+    }
+    if (const Json* p = find(v, "polygons")) {
+      if (!p->is_boolean()) expected(member(path, "polygons"), "true or false", *p);
+      if (p->get<bool>()) {
+        std::size_t kept = 0;
+        o.polygon_faces = polygonFacePlan(*o.mesh, &kept);
+        if (kept)
+          m_scene.warnings.push_back(prefix() + member(path, "polygons") + ": " + std::to_string(kept) +
+                                     " face(s) of more than 3 corners are not planar or not simple, and stay triangles");
+      }
     }
   }
 

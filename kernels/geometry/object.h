@@ -12,6 +12,7 @@
 #include "geometry/motion.h"
 #include "geometry/plane.h"
 #include "geometry/polygon.h"
+#include "geometry/polyhedron.h"
 #include "geometry/quadric.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
@@ -30,9 +31,14 @@ inline float3 xform_normal(const float* m, float3 n) {
                   m[2] * n.x + m[6] * n.y + m[10] * n.z);
 }
 
-/* The side data of a kind that keeps some (kernels/shared/object_gpu.h). */
+/* The side data of a kind that keeps some (kernels/shared/object_gpu.h). Its
+ * floats run on past the record into the records after it, so the pointer is
+ * made from an integer address: a cast record pointer would be folded by the
+ * compiler into an index of a member array (p[12]), which then overruns it as
+ * far as a bounds checker (Oclgrind) can tell. */
 inline __global const float* object_side_data(__global const ObjectGpu* ob) {
-  return ((__global const ObjectDataGpu*)(ob + as_int(ob->p[OBJECT_DATA_WORD])))->words;
+  uintptr_t record = (uintptr_t)(ob + as_int(ob->p[OBJECT_DATA_WORD]));
+  return (__global const float*)(record + OBJECT_DATA_HEADER_FLOATS * sizeof(float));
 }
 
 /* The world-to-object matrix of a transformed object at `time`, into m. */
@@ -76,6 +82,12 @@ inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, f
     }
     case OBJECT_POLYGON:
       return polygon_intersect(o, d, tmin, tmax, p, object_side_data(ob), t);
+    case OBJECT_POLYHEDRON: { /* u carries the plane hit to object_surface */
+      int face;
+      bool hit = polyhedron_intersect(o, d, tmin, tmax, (int)p[0], object_side_data(ob), t, &face);
+      *u = (float)face;
+      return hit;
+    }
   }
   return false;
 }
@@ -116,6 +128,10 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
     case OBJECT_POLYGON:
       n = load3g(q);
       if (want_uv) *uv = polygon_uv(q, p);
+      break;
+    case OBJECT_POLYHEDRON:
+      n = load3g(object_side_data(ob) + 4 * (int)hit.u);
+      if (want_uv) *uv = polyhedron_uv(p, n);
       break;
     default:
       n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));

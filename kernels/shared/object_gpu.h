@@ -10,6 +10,7 @@
 #define OBJECT_TRIANGLE 3
 #define OBJECT_QUADRIC 4
 #define OBJECT_POLYGON 5
+#define OBJECT_POLYHEDRON 6
 
 /* A polygon's point-in-polygon test (geometry/polygon.h). */
 #define POLYGON_CROSSING 0
@@ -37,6 +38,7 @@
  * p[OBJECT_DATA_WORD]. The record's floats start at its `words` and run on
  * through as many following records as they need (those carry no header). */
 #define OBJECT_DATA 101 /* the type of a data record: not a primitive */
+#define OBJECT_DATA_HEADER_FLOATS 4 /* the floats start this far into the record */
 #define OBJECT_DATA_WORD 11
 
 typedef struct ObjectGpu {
@@ -49,7 +51,8 @@ typedef struct ObjectGpu {
    * (scaled to a largest magnitude of 1), its clip box in side data; polygon:
    * unit normal xyz, plane offset, the two axes it is projected on, vertex
    * count, inside test (POLYGON_*), orientation (+1 or -1) in the projection;
-   * its vertices (xyz each) in side data. */
+   * its vertices (xyz each) in side data; polyhedron: the plane count, its planes
+   * (unit normal xyz, offset each) in side data. */
   float p[12];
   /* Rows of the 3x4 world-to-object affine matrix. Object-space normals map back
    * with its transposed linear part. Smooth triangles: see OBJECT_FLAG_VERTEX_NORMALS. */

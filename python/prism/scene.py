@@ -186,6 +186,15 @@ class Scene:
         obj = {"type": "polygon", "vertices": np.asarray(vertices, dtype=np.float64).reshape(-1, 3).tolist()}
         if inside_test is not None:
             obj["inside_test"] = inside_test
+        return self._add_json_object(obj, material, transform, transform_end)
+
+    def add_polyhedron(self, planes, material=None, transform=None, transform_end=None):
+        """Adds the convex polyhedron where a x + b y + c z + d <= 0 for every plane
+        [a, b, c, d] of `planes` ((N, 4), N >= 4; bounded). Returns its object index."""
+        obj = {"type": "polyhedron", "planes": np.asarray(planes, dtype=np.float64).reshape(-1, 4).tolist()}
+        return self._add_json_object(obj, material, transform, transform_end)
+
+    def _add_json_object(self, obj, material, transform, transform_end):
         if material is not None:
             obj["material"] = material
         for key, m in (("transform", transform), ("transform_end", transform_end)):

@@ -41,6 +41,8 @@ def whitted_dict():
              "clip": {"min": [2, 0, 0.5], "max": [3, 1.5, 1.5]}, "capped": True, "material": "brushed"},
             {"type": "polygon", "vertices": [[-3, 0.5, 1.5], [-2, 0.5, 1.5], [-2, 1.5, 1.5], [-2.5, 1, 1.5],
                                              [-3, 1.5, 1.5]], "inside_test": "radial", "material": "glass"},
+            {"type": "polyhedron", "planes": [[1, 1, 1, -0.5], [1, -1, -1, -0.5], [-1, 1, -1, -0.5], [-1, -1, 1, -0.5]],
+             "transform": {"matrix": [1, 0, 0, 0.5, 0, 1, 0, 0.5, 0, 0, 1, 2, 0, 0, 0, 1]}, "material": "brushed"},
         ],
     }
 
@@ -63,14 +65,17 @@ def test_a_scene_built_in_code_renders_as_the_same_scene_as_json(ctx):
                              material="brushed") == 4
     assert built.add_polygon([[-3, 0.5, 1.5], [-2, 0.5, 1.5], [-2, 1.5, 1.5], [-2.5, 1, 1.5], [-3, 1.5, 1.5]],
                              inside_test="radial", material="glass") == 5
-    assert built.object_count == 6
+    assert built.add_polyhedron([[1, 1, 1, -0.5], [1, -1, -1, -0.5], [-1, 1, -1, -0.5], [-1, -1, 1, -0.5]],
+                                material="brushed",
+                                transform=[[1, 0, 0, 0.5], [0, 1, 0, 0.5], [0, 0, 1, 2], [0, 0, 0, 1]]) == 6
+    assert built.object_count == 7
     written = prism.Scene.from_json(whitted_dict())
     a = ctx.render(built, width=72, height=40, max_depth=6, aovs=("depth", "primid"))
     b = ctx.render(written, width=72, height=40, max_depth=6, aovs=("depth", "primid"))
     assert a.rgba.tobytes() == b.rgba.tobytes()
     assert a.aovs["depth"].tobytes() == b.aovs["depth"].tobytes()
     assert (a.aovs["primid"] == b.aovs["primid"]).all()
-    assert set(np.unique(a.aovs["primid"])) == {-1, 0, 1, 2, 3, 4, 5}  # every object is seen, and the sky
+    assert set(np.unique(a.aovs["primid"])) == {-1, 0, 1, 2, 3, 4, 5, 6}  # every object is seen, and the sky
 
 
 def test_depth_and_primid_match_the_cameras_closed_form(ctx):

@@ -207,7 +207,7 @@ TEST_CASE("all structures agree on a scene of every primitive kind", "[accel]") 
   checkScene(mixedScene(), 20000, 96, 100000);
 }
 
-TEST_CASE("all structures agree on rays aimed at each quadric and polygon, and each is hit", "[accel]") {
+TEST_CASE("all structures agree on rays aimed at each quadric, polygon and polyhedron, and each is hit", "[accel]") {
   // They are small in the mixed scene; aim rays at each one's box.
   AccelScene scene = mixedScene(300);
   const Aabb box = boundsOf(scene.objects);
@@ -216,7 +216,8 @@ TEST_CASE("all structures agree on rays aimed at each quadric and polygon, and e
   std::vector<QueryRay> rays;
   std::vector<std::int32_t> quadrics;
   for (std::size_t i = 0; i < primitiveCount(scene.objects); ++i) {
-    if (scene.objects[i].type != OBJECT_QUADRIC && scene.objects[i].type != OBJECT_POLYGON) continue;
+    const int type = scene.objects[i].type;
+    if (type != OBJECT_QUADRIC && type != OBJECT_POLYGON && type != OBJECT_POLYHEDRON) continue;
     quadrics.push_back(static_cast<std::int32_t>(i));
     Aabb b;
     REQUIRE(objectBounds(scene.objects[i], &b));
@@ -229,7 +230,7 @@ TEST_CASE("all structures agree on rays aimed at each quadric and polygon, and e
       rays.push_back(QueryRay{o[0], o[1], o[2], 0, t[0] - o[0], t[1] - o[1], t[2] - o[2], INFINITY});
     }
   }
-  REQUIRE(quadrics.size() == 7 + 3);
+  REQUIRE(quadrics.size() == 7 + 3 + 2);
   RayQueryEngine none(sharedContext(), scene.objects, AccelKind::None, scene.materials);
   const std::vector<HitGpu> ref = none.intersect(rays);
   for (std::int32_t q : quadrics) {

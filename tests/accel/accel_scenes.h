@@ -86,7 +86,8 @@ inline void appendFromJson(std::vector<ObjectGpu>& objects, const std::string& o
 // axis-aligned triangles lying exactly on x = 0.5, y = 0.5, z = 0.5 (the
 // centre planes of a unit cube cell), and quadrics open and capped, placed by
 // transforms or by their coefficients, and polygons (one on x, y, z = 0.5
-// planes' neighbourhood, one convex, one not). Materials 1 and 2 are semitransparent.
+// planes' neighbourhood, one convex, one not), and convex polyhedra (one
+// placed by a transform, one by its planes). Materials 1 and 2 are semitransparent.
 inline AccelScene mixedScene(std::size_t soup = 1500) {
   AccelScene s;
   s.name = "mixed";
@@ -199,7 +200,12 @@ inline AccelScene mixedScene(std::size_t soup = 1500) {
       {"type": "polygon", "vertices": [[0.6, 0.1, 0.1], [0.9, 0.15, 0.23], [0.85, 0.4, 0.26], [0.7, 0.45, 0.21],
                                        [0.55, 0.3, 0.12]], "inside_test": "left-right"},
       {"type": "polygon", "vertices": [[0.3, 0.5, 0.5], [0.5, 0.5, 0.5], [0.5, 0.7, 0.5], [0.4, 0.6, 0.5],
-                                       [0.3, 0.7, 0.5]], "inside_test": "radial"}])",
+                                       [0.3, 0.7, 0.5]], "inside_test": "radial"},
+      {"type": "polyhedron", "planes": [[1, 1, 1, -0.1], [1, 1, -1, -0.1], [1, -1, 1, -0.1], [1, -1, -1, -0.1],
+                                         [-1, 1, 1, -0.1], [-1, 1, -1, -0.1], [-1, -1, 1, -0.1], [-1, -1, -1, -0.1]],
+       "transform": {"translate": [0.15, 0.15, 0.85]}},
+      {"type": "polyhedron", "planes": [[1, 0, 0, -0.95], [-1, 0, 0, 0.85], [0, 1, 0, -0.95], [0, -1, 0, 0.8],
+                                         [0, 0, 1, -0.95], [0, 0, -1, 0.8], [1, 1, 1, -2.75]]}])",
                 {0, 1, 2});
   return s;
 }

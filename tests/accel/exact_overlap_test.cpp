@@ -8,6 +8,7 @@
 
 #include "accel/exact_predicates.h"
 #include "accel/prim_ref.h"
+#include "scene/primitives/primitive_kind.h"
 #include "accel/accel_scenes.h"
 
 using namespace prism;
@@ -110,10 +111,11 @@ TEST_CASE("boxes overlap cells by intervals, touching included", "[accel][exact]
   CHECK_FALSE(meets(b, kUnit));
 }
 
-TEST_CASE("transformed objects (quadrics: their clip box) and planes get conservative or no bounds", "[accel][exact]") {
+TEST_CASE("transformed objects (by their kind's object-space box) and planes get conservative or no bounds", "[accel][exact]") {
   AccelScene scene = mixedScene(0);
   int transformed = 0, planes = 0;
-  for (const ObjectGpu& ob : scene.objects) {
+  for (std::size_t i = 0; i < primitiveCount(scene.objects); ++i) {  // not the data records after them
+    const ObjectGpu& ob = scene.objects[i];
     Aabb b;
     bool bounded = objectBounds(ob, &b);
     if (ob.type == OBJECT_PLANE) {
@@ -134,14 +136,13 @@ TEST_CASE("transformed objects (quadrics: their clip box) and planes get conserv
       REQUIRE(det != 0);
       std::mt19937 rng(3);
       std::uniform_real_distribution<double> u(-1, 1);
-      // The object-space shape: the unit sphere or box, or a quadric's clip box.
-      double centre[3] = {0, 0, 0}, half[3] = {1, 1, 1};
-      if (ob.type == OBJECT_QUADRIC) {
-        const float* clip = objectSideData(ob);
-        for (int a = 0; a < 3; ++a) {
-          centre[a] = 0.5 * (double(clip[a]) + clip[3 + a]);
-          half[a] = 0.5 * (double(clip[3 + a]) - clip[a]);
-        }
+      // The object-space box of the shape, by its kind (the unit sphere's and
+      // box's: [-1, 1]^3; a quadric's clip box; a polyhedron's exact box).
+      double centre[3], half[3], lo[3], hi[3];
+      REQUIRE(primitiveKindOfGpu(ob.type)->local_bounds(ob, objectSideData(ob), lo, hi));
+      for (int a = 0; a < 3; ++a) {
+        centre[a] = 0.5 * (lo[a] + hi[a]);
+        half[a] = 0.5 * (hi[a] - lo[a]);
       }
       int inside = 0;
       for (int k = 0; k < 2000; ++k) {
@@ -176,7 +177,7 @@ TEST_CASE("transformed objects (quadrics: their clip box) and planes get conserv
     }
   }
   CHECK(planes == 2);
-  CHECK(transformed == 12 + 5);  // spheres and boxes, quadrics
+  CHECK(transformed == 12 + 5 + 1);  // spheres and boxes, quadrics, a polyhedron
 }
 
 TEST_CASE("perfect-split bounds clip a triangle to the cell", "[accel][exact]") {

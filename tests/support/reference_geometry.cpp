@@ -37,6 +37,14 @@ Object scaledAboutCentre(const Object& object, double s) {
       for (Vec3& v : o.vertices) v = c + (v - c) * s;
       break;
     }
+    case ObjectType::Polyhedron:
+      // Every plane moves out (s > 1) or in along its normal by (s - 1) of
+      // its distance from the origin plus one unit.
+      for (std::size_t i = 0; i + 3 < o.params.size(); i += 4) {
+        const double len = length(Vec3{o.params[i], o.params[i + 1], o.params[i + 2]});
+        o.params[i + 3] -= (s - 1) * (len + std::fabs(o.params[i + 3]));
+      }
+      break;
     case ObjectType::Quadric: {
       // The solid {Q <= 0} grows as J falls, by (s - 1) of the largest
       // coefficient; the clip box scales about its centre.

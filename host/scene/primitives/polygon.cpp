@@ -13,6 +13,7 @@
 
 #include "scene/primitives/cgal_cell.h"
 #include "scene/primitives/inside_test.h"
+#include "scene/primitives/polygon_shape.h"
 #include "scene/primitives/primitive_kind.h"
 #include "scene/value_check.h"
 
@@ -78,6 +79,54 @@ Polygon2 projected(const std::vector<Vec3>& v, Projection p) {
   return poly;
 }
 
+}  // namespace
+
+PolygonCheck checkPolygon(const std::vector<Vec3>& verts) {
+  PolygonCheck c;
+  double diameter = 0;
+  for (const Vec3& a : verts)
+    for (const Vec3& b : {verts.front(), verts[verts.size() / 2]}) diameter = std::max(diameter, length(a - b));
+  const Vec3 n = newellNormal(verts);
+  if (!(length(n) > 1e-12 * diameter * diameter)) {
+    c.problem = "expected a polygon of non-zero area";
+    return c;
+  }
+  // Distances from the mean plane (Newell's normal through the centroid).
+  const Vec3 unit = n / length(n);
+  Vec3 centroid;
+  for (const Vec3& x : verts) centroid = centroid + x / static_cast<double>(verts.size());
+  double off = 0;
+  for (std::size_t k = 0; k < verts.size(); ++k) {
+    const double d = std::fabs(dot(verts[k] - centroid, unit));
+    if (d > off) off = d, c.vertex = k;
+  }
+  if (off > 1e-6 * diameter) {
+    c.problem = "expected the polygon to be planar, but this vertex lies " + formatNumber(off) +
+                " off the polygon's plane (at most 1e-6 of its size)";
+    return c;
+  }
+  c.vertex = SIZE_MAX;
+  const Polygon2 poly = projected(verts, projectionOf(n));
+  if (!poly.is_simple()) c.problem = "expected a simple polygon: two of its edges cross or touch (or a vertex repeats)";
+  c.convex = c.problem.empty() && poly.is_convex();
+  return c;
+}
+
+void flattenPolygon(const std::vector<Vec3>& verts, InsideTest test, ObjectGpu& g, std::vector<float>& side) {
+  const Vec3 n = normalize(newellNormal(verts));
+  const Projection pr = projectionOf(n);
+  const Polygon2 poly = projected(verts, pr);
+  if (test == InsideTest::LeftRight && !poly.is_convex())
+    throw std::invalid_argument("inside test 'left-right' needs a convex polygon and this one is not (use crossing or radial)");
+  g.type = OBJECT_POLYGON;
+  const double p[9] = {n.x,  n.y,  n.z, -dot(n, verts[0]), double(pr.u), double(pr.v), double(verts.size()),
+                       double(static_cast<int>(test)), poly.orientation() == CGAL::COUNTERCLOCKWISE ? 1.0 : -1.0};
+  for (int i = 0; i < 9; ++i) g.p[i] = static_cast<float>(p[i]);
+  for (const Vec3& v : verts) side.insert(side.end(), {float(v.x), float(v.y), float(v.z)});
+}
+
+namespace {
+
 void parse(const JsonReader& r, const Json& v, const std::string& path, const std::string&, Object& o) {
   r.checkObject(v, path, objectKeys({"vertices", "inside_test"}));
   const std::string at = member(path, "vertices");
@@ -88,33 +137,15 @@ void parse(const JsonReader& r, const Json& v, const std::string& path, const st
     verts.push_back(r.vec3(vs[k], element(at, k)));
     o.params.insert(o.params.end(), {verts.back().x, verts.back().y, verts.back().z});
   }
-  double diameter = 0;
-  for (const Vec3& a : verts)
-    for (const Vec3& b : {verts.front(), verts[verts.size() / 2]}) diameter = std::max(diameter, length(a - b));
-  const Vec3 n = newellNormal(verts);
-  if (!(length(n) > 1e-12 * diameter * diameter)) r.expected(at, "a polygon of non-zero area", vs);
-  // Distances from the mean plane (Newell's normal through the centroid).
-  const Vec3 unit = n / length(n);
-  Vec3 centroid;
-  for (const Vec3& x : verts) centroid = centroid + x / static_cast<double>(verts.size());
-  std::size_t worst = 0;
-  double off = 0;
-  for (std::size_t k = 0; k < verts.size(); ++k) {
-    const double d = std::fabs(dot(verts[k] - centroid, unit));
-    if (d > off) off = d, worst = k;
-  }
-  if (off > 1e-6 * diameter)
-    r.fail(element(at, worst), "expected the polygon to be planar, but this vertex lies " + formatNumber(off) +
-                                   " off the polygon's plane (at most 1e-6 of its size)");
-  const Polygon2 poly = projected(verts, projectionOf(n));
-  if (!poly.is_simple())
-    r.fail(at, "expected a simple polygon: two of its edges cross or touch (or a vertex repeats)");
+  const PolygonCheck check = checkPolygon(verts);
+  if (check.problem == "expected a polygon of non-zero area") r.expected(at, "a polygon of non-zero area", vs);
+  if (!check.problem.empty()) r.fail(check.vertex == SIZE_MAX ? at : element(at, check.vertex), check.problem);
   if (const Json* t = JsonReader::find(v, "inside_test")) {
     const std::string name = r.string(*t, member(path, "inside_test"), std::string("a string (") + kInsideTestNames + ")");
     InsideTest test;
     if (!tryParseInsideTest(name, &test))
       r.fail(member(path, "inside_test"), "unknown inside test '" + name + "' (expected " + kInsideTestNames + ")");
-    if (test == InsideTest::LeftRight && !poly.is_convex())
+    if (test == InsideTest::LeftRight && !check.convex)
       r.fail(member(path, "inside_test"),
              "'left-right' needs a convex polygon and this one is not (use crossing or radial)");
     o.inside_test = name;
@@ -137,18 +168,9 @@ void bake(Object& o) {
 }
 
 void flatten(const Object& o, const FlattenSettings& settings, ObjectGpu& g, std::vector<float>& side) {
-  const std::vector<Vec3> verts = verticesOf(o);
-  const Vec3 n = normalize(newellNormal(verts));
-  const Projection pr = projectionOf(n);
-  const Polygon2 poly = projected(verts, pr);
   InsideTest test = static_cast<InsideTest>(settings.inside_test);
   if (!o.inside_test.empty()) tryParseInsideTest(o.inside_test, &test);
-  if (test == InsideTest::LeftRight && !poly.is_convex())
-    throw std::invalid_argument("inside test 'left-right' needs a convex polygon and this one is not (use crossing or radial)");
-  const double p[9] = {n.x,  n.y,  n.z, -dot(n, verts[0]), double(pr.u), double(pr.v), double(verts.size()),
-                       double(static_cast<int>(test)), poly.orientation() == CGAL::COUNTERCLOCKWISE ? 1.0 : -1.0};
-  for (int i = 0; i < 9; ++i) g.p[i] = static_cast<float>(p[i]);
-  for (double x : o.params) side.push_back(static_cast<float>(x));
+  flattenPolygon(verticesOf(o), test, g, side);
 }
 
 bool localBounds(const ObjectGpu& g, const float* side, double lo[3], double hi[3]) {

@@ -8,7 +8,7 @@ namespace prism {
 
 const std::vector<const PrimitiveKind*>& primitiveKinds() {
   static const std::vector<const PrimitiveKind*> kinds = {&kSphereKind, &kBoxKind, &kPlaneKind, &kTriangleKind,
-                                                             &kQuadricKind, &kPolygonKind};
+                                                             &kQuadricKind, &kPolygonKind, &kPolyhedronKind};
   return kinds;
 }
 
@@ -42,7 +42,10 @@ const float* objectSideData(const ObjectGpu& g) {
   if (!kind || !kind->has_side_data) return nullptr;
   int records;
   std::memcpy(&records, &g.p[OBJECT_DATA_WORD], sizeof records);
-  return reinterpret_cast<const ObjectDataGpu*>(&g + records)->words;
+  // The floats run on past the record's `words` into the records after it:
+  // address them from the record's bytes, not through that array.
+  return reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(&g + records) +
+                                        OBJECT_DATA_HEADER_FLOATS * sizeof(float));
 }
 
 void setSideDataOffset(ObjectGpu& g, int records) { std::memcpy(&g.p[OBJECT_DATA_WORD], &records, sizeof records); }

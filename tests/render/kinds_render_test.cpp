@@ -1,15 +1,22 @@
-// Quadrics in whole renders: a quadric sphere against the sphere primitive
-// (two methods, one surface), the Z-buffer pass against traced primary rays on
-// every preset, and the scene format's presets against their closed forms.
+// Quadrics, polygons and polyhedra in whole renders: a quadric sphere against
+// the sphere primitive (two methods, one surface), the Z-buffer pass against
+// traced primary rays on every kind, the scene format's presets against their
+// closed forms, and the refusals of bad ones.
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "render/gpu_scene.h"
+#include "render/ray_queries.h"
 #include "render/renderer.h"
+#include "scene/mesh_objects.h"
 #include "scene/scene_loader.h"
+#include "support/scene_errors.h"
 #include "support/shared_context.h"
+#include "support/test_data.h"
 
 using namespace prism;
 using namespace prism::test;
@@ -81,7 +88,7 @@ TEST_CASE("a quadric sphere renders as the sphere primitive: depth, normal and c
   }
 }
 
-TEST_CASE("Z-buffer and traced primary rays agree on every quadric preset and a polygon", "[render][quadric][firsthit]") {
+TEST_CASE("Z-buffer and traced primary rays agree on every quadric preset, a polygon and a polyhedron", "[render][quadric][firsthit]") {
   const Scene scene = parseScene(zooScene(R"(
       {"type": "cylinder", "radius": 0.4, "height": 1.2, "material": "clay", "transform": {"translate": [-2, 0, 0]}},
       {"type": "cone", "radius": 0.5, "height": 1.3, "material": "mirror", "transform": {"translate": [-1, 0, 0]}},
@@ -94,7 +101,10 @@ TEST_CASE("Z-buffer and traced primary rays agree on every quadric preset and a 
       {"type": "quadric", "coefficients": [1, -1, 0, 0, 0, 0, 0, 0, -1, 0], "material": "clay",
        "clip": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]}, "transform": {"translate": [-1.5, 0.6, 1.5]}},
       {"type": "polygon", "vertices": [[1, 0.2, 1.2], [2, 0.2, 1.2], [2, 1.2, 1.2], [1.5, 0.6, 1.2], [1, 1.2, 1.2]],
-       "material": "mirror"})"),
+       "material": "mirror"},
+      {"type": "polyhedron", "material": "glass", "transform": {"translate": [-0.5, 0.5, 2]},
+       "planes": [[1, 1, 1, -0.5], [1, 1, -1, -0.5], [1, -1, 1, -0.5], [1, -1, -1, -0.5],
+                  [-1, 1, 1, -0.5], [-1, 1, -1, -0.5], [-1, -1, 1, -0.5], [-1, -1, -1, -0.5]]})"),
                                  "zoo");
   RenderOptions zopt = RenderOptions::fromScene(scene), topt = zopt;
   zopt.first_hit = FirstHitMode::ZBuffer;
@@ -175,11 +185,142 @@ TEST_CASE("bad quadrics are refused with the reason", "[render][quadric][scene]"
   };
   for (const auto& c : cases) {
     INFO(c.object);
-    try {
-      parseScene(std::string(R"({"objects": [)") + c.object + "]}", "bad.json");
-      FAIL("accepted");
-    } catch (const SceneError& e) {
-      CHECK_THAT(e.what(), Catch::Contains(c.message));
+    CHECK_THAT(errorOf(std::string(R"({"objects": [)") + c.object + "]}"), Catch::Contains(c.message));
+  }
+}
+
+TEST_CASE("bad polyhedra are refused with the reason", "[render][polyhedron][scene]") {
+  const struct {
+    const char* object;
+    const char* message;
+  } cases[] = {
+      {R"({"type": "polyhedron", "planes": [[1, 0, 0, -1], [-1, 0, 0, -1], [0, 1, 0, -1]]})",
+       "objects[0].planes: expected an array of 4 to 4096 planes"},
+      {R"({"type": "polyhedron", "planes": [[1, 0, 0, -1], [-1, 0, 0, -1], [0, 1, 0, -1], [0, 0, 0, -1]]})",
+       "objects[0].planes[3]: expected a plane with a non-zero normal"},
+      // x <= -1 and x >= 1: nothing in common.
+      {R"({"type": "polyhedron", "planes": [[1, 0, 0, 1], [-1, 0, 0, 1], [0, 1, 0, -1], [0, -1, 0, -1],
+          [0, 0, 1, -1], [0, 0, -1, -1]]})", "objects[0].planes: the half-spaces have no point in common"},
+      // A box open towards +z.
+      {R"({"type": "polyhedron", "planes": [[1, 0, 0, -1], [-1, 0, 0, -1], [0, 1, 0, -1], [0, -1, 0, -1],
+          [0, 0, -1, -1]]})", "objects[0].planes: the half-spaces do not enclose a bounded region"},
+      // 0 <= z <= 0: flat.
+      {R"({"type": "polyhedron", "planes": [[1, 0, 0, -1], [-1, 0, 0, -1], [0, 1, 0, -1], [0, -1, 0, -1],
+          [0, 0, 1, 0], [0, 0, -1, 0]]})", "objects[0].planes: the half-spaces enclose no volume (flat on the z axis)"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.object);
+    CHECK_THAT(errorOf(std::string(R"({"objects": [)") + c.object + "]}"), Catch::Contains(c.message));
+  }
+}
+
+TEST_CASE("a mesh's faces kept as polygons render the same depth and image as its triangles",
+          "[render][polygon][mesh]") {
+  // Pentagons, the Cornell box's quads, and a file with a non-planar quad (which
+  // stays triangles, with a warning).
+  for (const char* file : {"formats/off/geomview/dodec.off", "formats/obj/tinyobjloader/cornell_box.obj",
+                           "formats/off/selfmade/ngon_comments_counts_inline.off"}) {
+    const std::string path = prism_test::testDataDir() + "/" + file;
+    const std::string json = R"({"film": {"width": 96, "height": 72}, "objects": [{"type": "mesh", "file": ")" +
+                             path + R"("}]})";
+    Scene triangles = parseScene(json, "triangles");
+    Scene polygons = parseScene(json.substr(0, json.size() - 3) + R"(, "polygons": true}]})", "polygons");
+    // Frame it as the quick render does.
+    const Scene framed = sceneForMesh(triangles.objects[0].mesh);
+    triangles.camera = polygons.camera = framed.camera;
+    triangles.lights = polygons.lights = framed.lights;
+    const Object& mesh = polygons.objects[0];
+    std::size_t faces = 0, kept_as_polygons = 0;
+    for (std::uint32_t c : mesh.mesh->face_corners) faces += c > 3;
+    for (bool p : mesh.polygon_faces) kept_as_polygons += p;
+    INFO(file << ": " << kept_as_polygons << " of " << faces << " faces of more than 3 corners kept as polygons, "
+              << polygons.warnings.size() << " warning(s)");
+    CHECK(kept_as_polygons > 0);
+    CHECK(mesh.primitiveCount() < triangles.objects[0].primitiveCount());
+    CHECK(polygons.warnings.size() == (kept_as_polygons < faces ? 1u : 0u));
+    const RenderOptions opt = RenderOptions::fromScene(triangles);
+    const RenderResult a = sharedRenderer().render(triangles, opt), b = sharedRenderer().render(polygons, opt);
+    std::size_t hits = 0, same_hit = 0, close_depth = 0, close_colour = 0;
+    for (std::size_t p = 0; p < a.primid.size(); ++p) {
+      same_hit += (a.primid[p] >= 0) == (b.primid[p] >= 0);
+      if (a.primid[p] < 0 || b.primid[p] < 0) continue;
+      ++hits;
+      close_depth += std::fabs(a.depth[p] - b.depth[p]) <= 1e-5f * a.depth[p];
+      close_colour += maxChannelDiff(a, b, p) < 1e-3;
     }
+    INFO(hits << " pixels hit, " << same_hit << " agree on hit or miss, " << close_depth << " depths, "
+              << close_colour << " colours close");
+    CHECK(hits > a.primid.size() / 20);
+    CHECK(same_hit >= a.primid.size() - 2);  // a silhouette pixel may round either way
+    CHECK(close_depth >= hits - 2);
+    CHECK(close_colour >= hits * 99 / 100);
+  }
+}
+
+TEST_CASE("a polyhedron given by its faces meets rays where the box and the convex polyhedron do",
+          "[render][polyhedron]") {
+  // The unit cube by its faces (one face turned the wrong way round is refused
+  // below; all of them turned inwards is turned back), against the box.
+  const std::string cube_faces = R"({"type": "polyhedron",
+      "vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]],
+      "faces": [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]]})";
+  const std::string cube_inwards = R"({"type": "polyhedron",
+      "vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]],
+      "faces": [[1, 2, 3, 0], [7, 6, 5, 4], [4, 5, 1, 0], [6, 7, 3, 2], [5, 6, 2, 1], [3, 7, 4, 0]]})";
+  const std::string box = R"({"type": "box", "min": [0, 0, 0], "max": [1, 1, 1]})";
+  const std::string octa_faces = R"({"type": "polyhedron",
+      "vertices": [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]],
+      "faces": [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]]})";
+  const std::string octa_planes = R"({"type": "polyhedron", "planes": [[1, 1, 1, -1], [1, 1, -1, -1], [1, -1, 1, -1],
+      [1, -1, -1, -1], [-1, 1, 1, -1], [-1, 1, -1, -1], [-1, -1, 1, -1], [-1, -1, -1, -1]]})";
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<float> u(-3, 3);
+  std::vector<RayGpu> rays(4000);
+  for (RayGpu& r : rays) {
+    r = RayGpu{};
+    r.ox = u(rng), r.oy = u(rng), r.oz = u(rng);
+    r.dx = u(rng) * 0.1f - r.ox, r.dy = u(rng) * 0.1f - r.oy, r.dz = u(rng) * 0.1f - r.oz;  // towards the middle
+    r.tmax = INFINITY;
+    r.kind = RAY_KIND_PRIMARY;
+  }
+  auto trace = [&](const std::string& object) {
+    return traceClosest(sharedContext(), parseScene(R"({"objects": [)" + object + "]}", "one"), rays);
+  };
+  for (const auto& [a, b] : {std::pair{cube_faces, box}, std::pair{cube_inwards, box}, std::pair{octa_faces, octa_planes}}) {
+    const std::vector<HitGpu> ha = trace(a), hb = trace(b);
+    std::size_t hits = 0, differ = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      hits += hb[i].prim >= 0;
+      differ += (ha[i].prim >= 0) != (hb[i].prim >= 0) || std::fabs(ha[i].t - hb[i].t) > 1e-5f * (1 + hb[i].t);
+    }
+    INFO(a << "\nagainst " << b << ": " << hits << " hits, " << differ << " differ");
+    CHECK(hits > 500);
+    CHECK(differ <= 4);  // rays through edges and corners may round either way
+  }
+  // Turned inwards and turned back: the normals point out again.
+  const Scene inwards = parseScene(R"({"objects": [)" + cube_inwards + "]}", "inwards");
+  const GpuScene gpu = flattenScene(inwards, RenderOptions::fromScene(inwards));
+  CHECK(gpu.objects[0].type == OBJECT_POLYGON);
+  CHECK(gpu.objects[0].p[2] == -1.0f);  // the z = 0 face's normal is -z
+}
+
+TEST_CASE("polyhedra by faces must be closed and consistently turned", "[render][polyhedron][scene]") {
+  const std::string v = R"("vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])";
+  const struct {
+    std::string faces;
+    const char* message;
+  } cases[] = {
+      {R"([[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5]])", "belongs to one face only"},
+      {R"([[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]])",
+       "runs the same way in 2 faces"},
+      {R"([[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 9]])",
+       "objects[0].faces[5][3]: expected an integer in [0, 7]"},
+      {R"([[0, 3, 6, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]])",
+       "objects[0].faces[0]: expected the polygon to be planar"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.faces);
+    CHECK_THAT(errorOf(R"({"objects": [{"type": "polyhedron", )" + v + R"(, "faces": )" + c.faces + "}]}"),
+               Catch::Contains(c.message));
   }
 }
