@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 
+#include "accel/prim_ref.h"
 #include "accel_workloads.h"
 #include "bench_data.h"
 #include "device/context.h"
@@ -222,7 +223,7 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       c.row.structure = accelName(kind);
       c.row.build_seconds = st.build_seconds;
       c.rebuild = [&scene, kind] { return buildAccel(kind, scene.objects)->stats.build_seconds; };
-      c.row.bytes_per_triangle = scene.objects.empty() ? kNaN : double(st.bytes) / scene.objects.size();
+      c.row.bytes_per_triangle = scene.objects.empty() ? kNaN : double(st.bytes) / primitiveCount(scene.objects);
       c.row.nodes = static_cast<double>(st.node_count);
       c.row.leaves = static_cast<double>(st.leaf_count);
       c.row.prims_per_leaf = st.mean_prims_per_leaf;
@@ -283,7 +284,7 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     for (std::size_t i = 0; i < contenders.size(); ++i) {
       BenchRow& row = contenders[i].row;
       row.scene = scene.name;
-      row.triangles = scene.objects.size();
+      row.triangles = primitiveCount(scene.objects);  // not the motion and data records after them
       row.primary_mrays = primary_mrays[i];
       row.shadow_mrays = shadow_mrays[i];
       row.random_mrays = random_mrays[i];

@@ -97,14 +97,16 @@ std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<Object
   auto accel = std::make_unique<DeviceAccel>();
   accel->kind = kind;
   if (kind == AccelKind::None) {
-    // Brute force needs no tree: every object, planes included, is tested.
+    // Brute force needs no tree: every primitive, planes included, is tested
+    // (not the motion and data records after them).
     e.build(objects, PrimitiveSet{}, options, *accel);
-    accel->stats.primitives = objects.size();
-    accel->stats.references = objects.size();
-    accel->stats.leaf_count = objects.empty() ? 0 : 1;
+    const std::size_t primitives = primitiveCount(objects);
+    accel->stats.primitives = primitives;
+    accel->stats.references = primitives;
+    accel->stats.leaf_count = primitives == 0 ? 0 : 1;
     accel->stats.node_count = accel->stats.leaf_count;
-    accel->stats.mean_prims_per_leaf = static_cast<double>(objects.size());
-    accel->stats.sah_cost = static_cast<double>(objects.size());
+    accel->stats.mean_prims_per_leaf = static_cast<double>(primitives);
+    accel->stats.sah_cost = static_cast<double>(primitives);
     writeSceneHeader(Aabb(), *accel);
   } else {
     PrimitiveSet prims = gatherPrimitives(objects);
