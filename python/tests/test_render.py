@@ -154,3 +154,14 @@ def test_devices_and_images(ctx, tmp_path):
     image[..., 0] = np.linspace(0, 1, 8)
     prism.write_image(str(tmp_path / "ramp.pfm"), image)
     assert (tmp_path / "ramp.pfm").stat().st_size > 6 * 8 * 3 * 4
+
+
+def test_the_inside_tests_render_alike_and_left_right_refuses_a_non_convex_polygon(ctx):
+    scene = prism.Scene.from_json(whitted_dict())
+    # A non-convex polygon that names no test of its own (the other one names radial).
+    scene.add_polygon([[0, 2, -1], [1, 2, -1], [1, 3, -1], [0.5, 2.5, -1], [0, 3, -1]])
+    crossing = ctx.render(scene, width=48, height=32, inside_test="crossing")
+    radial = ctx.render(scene, width=48, height=32, inside_test="radial")
+    assert crossing.rgba.tobytes() == radial.rgba.tobytes()
+    with pytest.raises(prism.InvalidArgumentError, match="left-right' needs a convex polygon"):
+        ctx.render(scene, width=48, height=32, inside_test="left-right")
