@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "kernels/shared/motion_gpu.h"
+#include "scene/mesh_objects.h"
 #include "scene/motion.h"
 #include "scene/primitives/polygon_shape.h"
 #include "scene/primitives/primitive_kind.h"
@@ -43,22 +44,6 @@ ObjectGpu flattenObject(const Object& ob, const FlattenSettings& settings, std::
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c) g.world_to_object[4 * r + c] = static_cast<float>(inv.m[r][c]);
   return g;
-}
-
-// Appends side data as a data record (and the records its floats run on
-// into); returns the first record's index.
-std::size_t appendSideData(const std::vector<float>& side, std::vector<ObjectGpu>& out) {
-  const std::size_t first = out.size();
-  constexpr std::size_t kHeader = offsetof(ObjectDataGpu, words) / sizeof(float);
-  constexpr std::size_t kSlot = sizeof(ObjectGpu) / sizeof(float);
-  const std::size_t records = (kHeader + side.size() + kSlot - 1) / kSlot;
-  out.resize(first + records, ObjectGpu{});
-  ObjectDataGpu header{};
-  header.type = OBJECT_DATA;
-  header.size = static_cast<int>(side.size());
-  std::memcpy(&out[first], &header, offsetof(ObjectDataGpu, words));
-  std::memcpy(reinterpret_cast<float*>(&out[first]) + kHeader, side.data(), side.size() * sizeof(float));
-  return first;
 }
 
 Vec3 vertexAt(const std::vector<float>& xyz, std::uint32_t i) { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
@@ -117,9 +102,8 @@ void appendMesh(const Object& ob, const FlattenSettings& settings, std::vector<O
   for (std::size_t f = 0; f < ob.polygon_faces.size(); ++f) {
     const std::uint32_t corners = mesh.face_corners[f];
     if (ob.polygon_faces[f]) {
-      std::vector<Vec3> verts = {world[mesh.indices[3 * t]]};
-      for (std::uint32_t k = 0; k + 2 < corners; ++k) verts.push_back(world[mesh.indices[3 * (t + k) + 1]]);
-      verts.push_back(world[mesh.indices[3 * (t + corners - 3) + 2]]);
+      std::vector<Vec3> verts;
+      for (std::uint32_t v : faceVertexIndices(mesh, t, corners)) verts.push_back(world[v]);
       ObjectGpu g{};
       std::vector<float> side;
       flattenPolygon(verts, static_cast<InsideTest>(settings.inside_test), g, side);

@@ -28,15 +28,19 @@ Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const 
   return scene.objects.back();
 }
 
-std::vector<Vec3> faceVertices(const TriangleMesh& mesh, std::size_t first_triangle, std::uint32_t corners) {
-  auto at = [&](std::size_t k) {
-    const std::uint32_t v = mesh.indices[k];
-    return Vec3{mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]};
-  };
+std::vector<std::uint32_t> faceVertexIndices(const TriangleMesh& mesh, std::size_t first_triangle,
+                                             std::uint32_t corners) {
   // The fan (v0, vk, vk+1): v0, then each triangle's second corner, then the last one's third.
-  std::vector<Vec3> verts = {at(3 * first_triangle)};
-  for (std::uint32_t k = 0; k + 2 < corners; ++k) verts.push_back(at(3 * (first_triangle + k) + 1));
-  verts.push_back(at(3 * (first_triangle + corners - 3) + 2));
+  std::vector<std::uint32_t> ids = {mesh.indices[3 * first_triangle]};
+  for (std::uint32_t k = 0; k + 2 < corners; ++k) ids.push_back(mesh.indices[3 * (first_triangle + k) + 1]);
+  ids.push_back(mesh.indices[3 * (first_triangle + corners - 3) + 2]);
+  return ids;
+}
+
+std::vector<Vec3> faceVertices(const TriangleMesh& mesh, std::size_t first_triangle, std::uint32_t corners) {
+  std::vector<Vec3> verts;
+  for (std::uint32_t v : faceVertexIndices(mesh, first_triangle, corners))
+    verts.push_back({mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]});
   return verts;
 }
 

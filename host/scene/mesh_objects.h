@@ -14,8 +14,10 @@ namespace prism {
 // (and the default material where the file gives none); otherwise it overrides them.
 Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth);
 
-// The vertices of face f, which starts at triangle `first_triangle` of the
-// mesh's fan, in file order.
+// The vertex indices, and the positions, of the face that starts at triangle
+// `first_triangle` of the mesh's fan, in file order.
+std::vector<std::uint32_t> faceVertexIndices(const TriangleMesh& mesh, std::size_t first_triangle,
+                                             std::uint32_t corners);
 std::vector<Vec3> faceVertices(const TriangleMesh& mesh, std::size_t first_triangle, std::uint32_t corners);
 
 // Which faces of the mesh stay polygons when it is loaded with "polygons":

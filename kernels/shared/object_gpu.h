@@ -52,7 +52,8 @@ typedef struct ObjectGpu {
    * unit normal xyz, plane offset, the two axes it is projected on, vertex
    * count, inside test (POLYGON_*), orientation (+1 or -1) in the projection;
    * its vertices (xyz each) in side data; polyhedron: the plane count, its planes
-   * (unit normal xyz, offset each) in side data. */
+   * (unit normal xyz, offset each) and then its box (min xyz, max xyz) in side
+   * data. */
   float p[12];
   /* Rows of the 3x4 world-to-object affine matrix. Object-space normals map back
    * with its transposed linear part. Smooth triangles: see OBJECT_FLAG_VERTEX_NORMALS. */

@@ -66,17 +66,8 @@ inline void appendFromJson(std::vector<ObjectGpu>& objects, const std::string& o
   }
   for (std::size_t i = 0; i < sides.size(); ++i) {
     if (sides[i].empty()) continue;
-    // A header record, then the floats running on through whole records.
-    constexpr std::size_t kHeader = offsetof(ObjectDataGpu, words) / sizeof(float);
-    constexpr std::size_t kSlot = sizeof(ObjectGpu) / sizeof(float);
-    const std::size_t at = objects.size();
-    objects.resize(at + (kHeader + sides[i].size() + kSlot - 1) / kSlot, ObjectGpu{});
-    ObjectDataGpu header{};
-    header.type = OBJECT_DATA;
-    header.size = static_cast<int>(sides[i].size());
-    std::memcpy(&objects[at], &header, offsetof(ObjectDataGpu, words));
-    std::memcpy(reinterpret_cast<float*>(&objects[at]) + kHeader, sides[i].data(), sides[i].size() * sizeof(float));
-    setSideDataOffset(objects[first + i], static_cast<int>(at - (first + i)));
+    const std::size_t record = appendSideData(sides[i], objects);
+    setSideDataOffset(objects[first + i], static_cast<int>(record - (first + i)));
   }
 }
 

@@ -89,6 +89,7 @@ PolygonCheck checkPolygon(const std::vector<Vec3>& verts) {
   const Vec3 n = newellNormal(verts);
   if (!(length(n) > 1e-12 * diameter * diameter)) {
     c.problem = "expected a polygon of non-zero area";
+    c.zero_area = true;
     return c;
   }
   // Distances from the mean plane (Newell's normal through the centroid).
@@ -138,7 +139,7 @@ void parse(const JsonReader& r, const Json& v, const std::string& path, const st
     o.params.insert(o.params.end(), {verts.back().x, verts.back().y, verts.back().z});
   }
   const PolygonCheck check = checkPolygon(verts);
-  if (check.problem == "expected a polygon of non-zero area") r.expected(at, "a polygon of non-zero area", vs);
+  if (check.zero_area) r.expected(at, "a polygon of non-zero area", vs);
   if (!check.problem.empty()) r.fail(check.vertex == SIZE_MAX ? at : element(at, check.vertex), check.problem);
   if (const Json* t = JsonReader::find(v, "inside_test")) {
     const std::string name = r.string(*t, member(path, "inside_test"), std::string("a string (") + kInsideTestNames + ")");

@@ -17,6 +17,7 @@ namespace prism {
 struct PolygonCheck {
   std::string problem;          // "" when the vertices make a polygon prism renders as one
   std::size_t vertex = SIZE_MAX;  // the vertex the problem is about, if one is
+  bool zero_area = false;         // the problem is that it has no area
   bool convex = false;
 };
 

@@ -150,7 +150,9 @@ std::string problem(const Object& o) {
   return "";
 }
 
-// Planes with unit normals, so the kernel's plane values are distances.
+// Planes with unit normals, so the kernel's plane values are distances; after
+// them, the box of those (float) planes, solved once here rather than at every
+// bounds query (six linear programs), rounded outward.
 void flatten(const Object& o, const FlattenSettings&, ObjectGpu& g, std::vector<float>& side) {
   const std::size_t count = o.params.size() / 4;
   for (std::size_t i = 0; i < count; ++i) {
@@ -158,16 +160,24 @@ void flatten(const Object& o, const FlattenSettings&, ObjectGpu& g, std::vector<
     const double len = length(Vec3{p[0], p[1], p[2]});
     for (int k = 0; k < 4; ++k) side.push_back(static_cast<float>(p[k] / len));
   }
+  const std::vector<double> planes(side.begin(), side.end());
+  double lo[3], hi[3];
+  if (extentOf(planes.data(), count, lo, hi) != Extent::Bounded)  // rounding the planes opened them
+    throw std::invalid_argument("polyhedron: its planes, rounded to float, no longer enclose a bounded region");
+  for (int a = 0; a < 3; ++a) side.push_back(roundDown(lo[a]));
+  for (int a = 0; a < 3; ++a) side.push_back(roundUp(hi[a]));
   g.p[0] = static_cast<float>(count);
 }
 
-// The box of the device's planes (the float ones), exactly.
+// The box flatten stored after the planes.
 bool localBounds(const ObjectGpu& g, const float* side, double lo[3], double hi[3]) {
-  const std::size_t count = static_cast<std::size_t>(g.p[0]);
-  std::vector<double> planes(side, side + 4 * count);
-  for (double x : planes)
-    if (!std::isfinite(x)) return false;
-  return extentOf(planes.data(), count, lo, hi) == Extent::Bounded;
+  const float* box = side + 4 * static_cast<std::size_t>(g.p[0]);
+  for (int a = 0; a < 3; ++a) {
+    if (!std::isfinite(box[a]) || !std::isfinite(box[3 + a])) return false;
+    lo[a] = box[a];
+    hi[a] = box[3 + a];
+  }
+  return true;
 }
 
 // Independent of the kernel's interval clipping: every point where the ray

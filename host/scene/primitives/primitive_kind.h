@@ -78,6 +78,9 @@ std::string primitiveKindNames();
 
 // The side data of a record that sits in its object array (null when its kind has none).
 const float* objectSideData(const ObjectGpu& g);
+// Appends `side` to an object array as a data record (and the records its
+// floats run on into), after every primitive; returns the first record's index.
+std::size_t appendSideData(const std::vector<float>& side, std::vector<ObjectGpu>& out);
 // The offset of a record's data record, for flattening (written as int bits).
 void setSideDataOffset(ObjectGpu& g, int records);
 

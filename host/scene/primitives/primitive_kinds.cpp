@@ -48,6 +48,20 @@ const float* objectSideData(const ObjectGpu& g) {
                                         OBJECT_DATA_HEADER_FLOATS * sizeof(float));
 }
 
+std::size_t appendSideData(const std::vector<float>& side, std::vector<ObjectGpu>& out) {
+  const std::size_t first = out.size();
+  constexpr std::size_t kSlot = sizeof(ObjectGpu) / sizeof(float);
+  const std::size_t records = (OBJECT_DATA_HEADER_FLOATS + side.size() + kSlot - 1) / kSlot;
+  out.resize(first + records, ObjectGpu{});
+  ObjectDataGpu header{};
+  header.type = OBJECT_DATA;
+  header.size = static_cast<int>(side.size());
+  unsigned char* bytes = reinterpret_cast<unsigned char*>(&out[first]);
+  std::memcpy(bytes, &header, OBJECT_DATA_HEADER_FLOATS * sizeof(float));
+  std::memcpy(bytes + OBJECT_DATA_HEADER_FLOATS * sizeof(float), side.data(), side.size() * sizeof(float));
+  return first;
+}
+
 void setSideDataOffset(ObjectGpu& g, int records) { std::memcpy(&g.p[OBJECT_DATA_WORD], &records, sizeof records); }
 
 std::vector<std::string> objectKeys(std::initializer_list<const char*> own) {
