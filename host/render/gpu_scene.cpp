@@ -31,14 +31,15 @@ void put4(float* dst, const Vec3& v, double w = 0) {
   dst[3] = static_cast<float>(w);
 }
 
-// An analytic object's record, by its kind; parameters that do not fit the
-// record go to `side`.
-ObjectGpu flattenObject(const Object& ob, const FlattenSettings& settings, std::vector<float>& side) {
+// The record of primitive `part` of an analytic object, by its kind;
+// parameters that do not fit the record go to `side`.
+ObjectGpu flattenObject(const Object& ob, std::size_t part, const FlattenSettings& settings,
+                        std::vector<float>& side) {
   const PrimitiveKind& kind = primitiveKind(ob.type);
   ObjectGpu g{};
   g.type = kind.gpu_type;
   g.material = ob.material;
-  kind.flatten(ob, settings, g, side);
+  kind.flatten(ob, part, settings, g, side);
   g.has_transform = ob.transform.isIdentity() ? 0 : 1;
   Transform inv = g.has_transform ? ob.transform.inverse() : Transform::identity();
   for (int r = 0; r < 3; ++r)
@@ -237,7 +238,7 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   // Reserved once: a reservation per mesh, of exactly what it adds, would defeat
   // the vector's doubling and copy everything again for every mesh.
   std::size_t total = 0;
-  for (const Object& ob : scene.objects) total += ob.type == ObjectType::Mesh ? ob.mesh->triangleCount() : 1;
+  for (const Object& ob : scene.objects) total += ob.primitiveCount();
   g.objects.reserve(total);
   std::vector<std::pair<std::size_t, std::vector<float>>> sides;  // (primitive, its side data)
   FlattenSettings settings;
@@ -253,13 +254,15 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
         throw std::invalid_argument("objects[" + std::to_string(i) + "]: " + e.what());
       }
     } else {
-      std::vector<float> side;
-      try {
-        g.objects.push_back(flattenObject(ob, settings, side));
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("objects[" + std::to_string(i) + "]: " + e.what());
+      for (std::size_t part = 0; part < ob.primitiveCount(); ++part) {
+        std::vector<float> side;
+        try {
+          g.objects.push_back(flattenObject(ob, part, settings, side));
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument("objects[" + std::to_string(i) + "]: " + e.what());
+        }
+        if (!side.empty()) sides.emplace_back(g.objects.size() - 1, std::move(side));
       }
-      if (!side.empty()) sides.emplace_back(first, std::move(side));
     }
     if (!moves) continue;
     for (std::size_t i = first; i < g.objects.size(); ++i) moving.emplace_back(i, motions.size());

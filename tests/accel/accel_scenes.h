@@ -53,16 +53,18 @@ inline void appendFromJson(std::vector<ObjectGpu>& objects, const std::string& o
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& o = scene.objects[i];
     const PrimitiveKind& kind = primitiveKind(o.type);
-    ObjectGpu g = identityObject(kind.gpu_type, materials[i % materials.size()]);
-    sides.emplace_back();
-    kind.flatten(o, FlattenSettings{}, g, sides.back());
-    if (!o.transform.isIdentity()) {
-      const Transform inv = o.transform.inverse();
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c) g.world_to_object[4 * r + c] = static_cast<float>(inv.m[r][c]);
-      g.has_transform = 1;
+    for (std::size_t part = 0; part < o.primitiveCount(); ++part) {
+      ObjectGpu g = identityObject(kind.gpu_type, materials[i % materials.size()]);
+      sides.emplace_back();
+      kind.flatten(o, part, FlattenSettings{}, g, sides.back());
+      if (!o.transform.isIdentity()) {
+        const Transform inv = o.transform.inverse();
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 4; ++c) g.world_to_object[4 * r + c] = static_cast<float>(inv.m[r][c]);
+        g.has_transform = 1;
+      }
+      objects.push_back(g);
     }
-    objects.push_back(g);
   }
   for (std::size_t i = 0; i < sides.size(); ++i) {
     if (sides[i].empty()) continue;

@@ -24,7 +24,7 @@ std::string problem(const Object& o) {
   return p.empty() ? vectorProblem(o.box_max, "max") : p;
 }
 
-void flatten(const Object& o, const FlattenSettings&, ObjectGpu& g, std::vector<float>&) {
+void flatten(const Object& o, std::size_t, const FlattenSettings&, ObjectGpu& g, std::vector<float>&) {
   const Vec3* corners[2] = {&o.box_min, &o.box_max};
   for (int k = 0; k < 2; ++k) {
     g.p[3 * k] = static_cast<float>(corners[k]->x);

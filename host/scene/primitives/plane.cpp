@@ -27,7 +27,7 @@ void bake(Object& o) {
   o.normal = unitVector(world);
 }
 
-void flatten(const Object& o, const FlattenSettings&, ObjectGpu& g, std::vector<float>&) {
+void flatten(const Object& o, std::size_t, const FlattenSettings&, ObjectGpu& g, std::vector<float>&) {
   const Vec3 n = normalize(o.normal);
   const double v[6] = {o.point.x, o.point.y, o.point.z, n.x, n.y, n.z};
   for (int i = 0; i < 6; ++i) g.p[i] = static_cast<float>(v[i]);

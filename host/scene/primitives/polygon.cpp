@@ -168,7 +168,7 @@ void bake(Object& o) {
   }
 }
 
-void flatten(const Object& o, const FlattenSettings& settings, ObjectGpu& g, std::vector<float>& side) {
+void flatten(const Object& o, std::size_t, const FlattenSettings& settings, ObjectGpu& g, std::vector<float>& side) {
   InsideTest test = static_cast<InsideTest>(settings.inside_test);
   if (!o.inside_test.empty()) tryParseInsideTest(o.inside_test, &test);
   flattenPolygon(verticesOf(o), test, g, side);

@@ -153,7 +153,7 @@ std::string problem(const Object& o) {
 // Planes with unit normals, so the kernel's plane values are distances; after
 // them, the box of those (float) planes, solved once here rather than at every
 // bounds query (six linear programs), rounded outward.
-void flatten(const Object& o, const FlattenSettings&, ObjectGpu& g, std::vector<float>& side) {
+void flatten(const Object& o, std::size_t, const FlattenSettings&, ObjectGpu& g, std::vector<float>& side) {
   const std::size_t count = o.params.size() / 4;
   for (std::size_t i = 0; i < count; ++i) {
     const double* p = &o.params[4 * i];

@@ -44,10 +44,13 @@ struct PrimitiveKind {
   // world space; null: the kind is intersected in object space.
   void (*bake)(Object& o);
 
-  // The device record: p[] (and flags), with parameters that do not fit p[]
-  // appended to `side` (placed in a data record, kernels/shared/object_gpu.h).
-  // Throws std::invalid_argument when the settings do not suit the object.
-  void (*flatten)(const Object& o, const FlattenSettings& settings, ObjectGpu& g, std::vector<float>& side);
+  // The device record of primitive `part` of the object (0 for a kind of one
+  // primitive per object; a patch set has Object::primitiveCount() of them):
+  // p[] (and flags), with parameters that do not fit p[] appended to `side`
+  // (placed in a data record, kernels/shared/object_gpu.h). Throws
+  // std::invalid_argument when the settings do not suit the object.
+  void (*flatten)(const Object& o, std::size_t part, const FlattenSettings& settings, ObjectGpu& g,
+                  std::vector<float>& side);
   // Object-space box of the record's shape, in double; false: unbounded (a
   // plane) or not finite. `side` is the record's side data (or null).
   bool (*local_bounds)(const ObjectGpu& g, const float* side, double lo[3], double hi[3]);

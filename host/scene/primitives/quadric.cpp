@@ -115,7 +115,7 @@ std::string problem(const Object& o) {
 
 // Coefficients scaled to a largest magnitude of 1 (the same surface and the
 // same inside), so the kernel's products stay far from float's limits.
-void flatten(const Object& o, const FlattenSettings&, ObjectGpu& g, std::vector<float>& side) {
+void flatten(const Object& o, std::size_t, const FlattenSettings&, ObjectGpu& g, std::vector<float>& side) {
   double scale = 0;
   for (int i = 0; i < kCoefficients; ++i) scale = std::max(scale, std::fabs(o.params[i]));
   for (int i = 0; i < kCoefficients; ++i) g.p[i] = static_cast<float>(o.params[i] / scale);

@@ -24,7 +24,7 @@ std::string problem(const Object& o) {
   return "";
 }
 
-void flatten(const Object& o, const FlattenSettings&, ObjectGpu& g, std::vector<float>&) {
+void flatten(const Object& o, std::size_t, const FlattenSettings&, ObjectGpu& g, std::vector<float>&) {
   g.p[0] = static_cast<float>(o.center.x);
   g.p[1] = static_cast<float>(o.center.y);
   g.p[2] = static_cast<float>(o.center.z);

@@ -36,7 +36,7 @@ void bake(Object& o) {
   for (Vec3& p : o.vertices) p = o.transform.applyPoint(p);
 }
 
-void flatten(const Object& o, const FlattenSettings&, ObjectGpu& g, std::vector<float>&) {
+void flatten(const Object& o, std::size_t, const FlattenSettings&, ObjectGpu& g, std::vector<float>&) {
   for (int k = 0; k < 3; ++k) {
     g.p[3 * k] = static_cast<float>(o.vertices[k].x);
     g.p[3 * k + 1] = static_cast<float>(o.vertices[k].y);
