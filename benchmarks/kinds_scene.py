@@ -1,15 +1,20 @@
 #!/usr/bin/env python3
 """Writes a JSON scene of N random analytic objects of every kind (spheres,
 boxes, triangles, quadric presets, polygons, convex polyhedra), some
-transformed, for prism-bench accel's agreement check across the structures:
+transformed, and four small teapots of Bezier patches (two by Newton
+iteration, two by subdivision), for prism-bench accel's agreement check
+across the structures:
 
     python3 benchmarks/kinds_scene.py 600 > kinds.json
     build/benchmarks/prism-bench accel kinds.json --structures bvh,octree,bsp,none
 """
 import json
 import math
+import os
 import random
 import sys
+
+TEAPOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "data", "patches", "teapot.bpt")
 
 
 def main():
@@ -50,6 +55,11 @@ def main():
         else:
             objects.append({"type": "quadric", "coefficients": [1, -1, 0, 0, 0, 0, 0, 0, -1 / s, 0],
                             "clip": {"min": [-s, -s, -s], "max": [s, s, s]}, "transform": move})
+    for k in range(4):
+        objects.append({"type": "patches", "file": os.path.normpath(TEAPOT),
+                        "method": "analytic" if k % 2 == 0 else "subdivision",
+                        "transform": [{"scale": 0.15}, {"rotate": {"axis": [1, 0, 0], "angle": rng.uniform(0, 360)}},
+                                      {"translate": [rng.uniform(-4, 4) for _ in range(3)]}]})
     json.dump({"objects": objects}, sys.stdout)
 
 

@@ -121,9 +121,11 @@ TriangleMesh bumpyTorus(std::size_t triangles) {
 
 Aabb boundsOf(const std::vector<ObjectGpu>& objects) {
   Aabb box;
-  for (const ObjectGpu& ob : objects) {
+  // The primitives only: the motion and data records after them are not
+  // objects (a data record's floats may read as any type).
+  for (std::size_t i = 0; i < primitiveCount(objects); ++i) {
     Aabb b;
-    if (objectBounds(ob, &b)) box.extend(b);
+    if (objectBounds(objects[i], &b)) box.extend(b);
   }
   return box;
 }

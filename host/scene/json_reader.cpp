@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "scene/scene_loader.h"
 
@@ -135,6 +136,12 @@ std::vector<double> JsonReader::numbers(const Json& v, const std::string& path, 
   std::vector<double> out(count);
   for (std::size_t i = 0; i < count; ++i) out[i] = number(v[i], element(path, i));
   return out;
+}
+
+std::string JsonReader::filePath(const std::string& file) const {
+  std::filesystem::path resolved(file);
+  if (resolved.is_relative() && !m_base_dir.empty()) resolved = std::filesystem::path(m_base_dir) / resolved;
+  return resolved.string();
 }
 
 }  // namespace prism

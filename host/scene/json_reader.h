@@ -31,8 +31,10 @@ class JsonReader {
   using Check = bool (*)(double);
 
   // `name` starts every message (empty for a fragment the C API built);
-  // unknown keys are reported as warnings into `warnings`.
-  JsonReader(std::string name, std::vector<std::string>* warnings) : m_name(std::move(name)), m_warnings(warnings) {}
+  // unknown keys are reported as warnings into `warnings`; files the scene
+  // names are relative to `base_dir` (the scene file's folder).
+  JsonReader(std::string name, std::vector<std::string>* warnings, std::string base_dir = "")
+      : m_name(std::move(name)), m_warnings(warnings), m_base_dir(std::move(base_dir)) {}
 
   std::string prefix() const { return m_name.empty() ? "" : m_name + ": "; }
   // Throw SceneError (scene/scene_loader.h).
@@ -56,10 +58,13 @@ class JsonReader {
   Vec3 nonZeroVec3(const Json& v, const std::string& path) const;
   // An array of exactly `count` finite numbers.
   std::vector<double> numbers(const Json& v, const std::string& path, std::size_t count) const;
+  // A file the scene names, relative to the scene file's folder.
+  std::string filePath(const std::string& file) const;
 
  private:
   std::string m_name;
   std::vector<std::string>* m_warnings;
+  std::string m_base_dir;
 };
 
 }  // namespace prism

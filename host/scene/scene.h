@@ -3,10 +3,12 @@
 // renderer flattens it into device buffers (render/gpu_scene.h).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "scene/mesh.h"
+#include "scene/patches/bezier_patch.h"
 #include "scene/scene_material.h"
 #include "scene/transform.h"
 #include "scene/vec3.h"
@@ -76,7 +78,8 @@ struct Light {
   int samples = 1;
 };
 
-enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4, Quadric = 5, Polygon = 6, Polyhedron = 7 };
+enum class ObjectType { Sphere = 0, Box = 1, Plane = 2, Triangle = 3, Mesh = 4, Quadric = 5, Polygon = 6, Polyhedron = 7,
+                        Patches = 8 };
 
 struct Object {
   ObjectType type = ObjectType::Sphere;
@@ -95,10 +98,14 @@ struct Object {
   Vec3 vertices[3];
   // Parameters of the kinds that lay them out themselves (scene/primitives/):
   // quadric: coefficients A..J, then the clip box's min and max; polygon: its
-  // vertices, xyz each; polyhedron: its planes, a b c d each.
+  // vertices, xyz each; polyhedron: its planes, a b c d each; patches: the
+  // tolerance of Newton iteration.
   std::vector<double> params;
   bool capped = false;  // quadric: close the solid with the clip box's faces
   std::string inside_test;  // polygon: its point-in-polygon test, or "" for render.inside_test
+  // Patches (the analytic method): the pieces the patches were cut into, each
+  // one primitive (scene/patches/patch_subdivision.h).
+  std::shared_ptr<const std::vector<PatchPiece>> pieces;
   // Mesh: its triangles (shared with other objects naming the same file), drawn
   // through `transform`; `material` is used for triangles whose file gives none,
   // or for all of them when `material_override` is set. The file's own materials
@@ -113,9 +120,11 @@ struct Object {
   std::vector<bool> polygon_faces;
 
   // Primitives this object contributes to the scene's numbering (primid): one
-  // for an analytic object, one per triangle for a mesh, or, with polygon
-  // faces, one per polygon and per triangle of the other faces.
+  // for an analytic object, one per piece for patches, one per triangle for a
+  // mesh, or, with polygon faces, one per polygon and per triangle of the
+  // other faces.
   std::size_t primitiveCount() const {
+    if (type == ObjectType::Patches) return pieces ? pieces->size() : 0;
     if (type != ObjectType::Mesh || !mesh) return 1;
     if (polygon_faces.empty()) return mesh->triangleCount();
     std::size_t n = 0;

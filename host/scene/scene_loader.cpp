@@ -49,7 +49,7 @@ constexpr double kMaxExponent = 1e6;   // shininess: pow_positive is checked up 
 class SceneParser : private JsonReader {
  public:
   SceneParser(std::string name, std::string base_dir, Scene& scene)
-      : JsonReader(std::move(name), &scene.warnings), m_base_dir(std::move(base_dir)), m_scene(scene) {}
+      : JsonReader(std::move(name), &scene.warnings, std::move(base_dir)), m_scene(scene) {}
 
   void parse(const ParsedJson& parsed) {
     const Json& root = parsed.root;
@@ -405,17 +405,16 @@ class SceneParser : private JsonReader {
   // name it (MeshCache). Only the mesh and `smooth` are read here; the object is
   // completed by addMeshObject in parseObjects.
   void parseMesh(const Json& v, const std::string& path, Object& o) {
-    const std::string filePath = member(path, "file");
-    std::string file = string(require(v, path, "file"), filePath, "a mesh file name (.obj, .ply, .off, ...)");
-    std::filesystem::path resolved(file);
-    if (resolved.is_relative() && !m_base_dir.empty()) resolved = std::filesystem::path(m_base_dir) / resolved;
+    const std::string file_at = member(path, "file");
+    std::string file = string(require(v, path, "file"), file_at, "a mesh file name (.obj, .ply, .off, ...)");
+    const std::filesystem::path resolved(filePath(file));
     try {
       o.mesh = MeshCache::global().load(resolved.string());
     } catch (const MeshError& e) {
-      fail(filePath, e.what());
+      fail(file_at, e.what());
     }
     if (o.mesh->triangleCount() == 0)
-      fail(filePath, "'" + resolved.string() + "' holds " + std::to_string(o.mesh->vertexCount()) +
+      fail(file_at, "'" + resolved.string() + "' holds " + std::to_string(o.mesh->vertexCount()) +
                          " vertices and no faces (a point cloud?): nothing to render");
     for (const std::string& w : o.mesh->warnings) m_scene.warnings.push_back(resolved.string() + ": " + w);
     if (const Json* p = find(v, "smooth")) {
@@ -518,7 +517,6 @@ class SceneParser : private JsonReader {
     return t;
   }
 
-  std::string m_base_dir;  // mesh files are relative to the scene file's folder
   Scene& m_scene;
   const std::vector<std::string>* m_material_order = nullptr;  // the materials' keys in file order
   std::unordered_map<std::string, int> m_material_index;       // materialsByName(): name -> index

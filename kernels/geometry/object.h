@@ -10,6 +10,7 @@
 #include "common/math.h"
 #include "geometry/box.h"
 #include "geometry/motion.h"
+#include "geometry/patch.h"
 #include "geometry/plane.h"
 #include "geometry/polygon.h"
 #include "geometry/polyhedron.h"
@@ -88,6 +89,8 @@ inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, f
       *u = (float)face;
       return hit;
     }
+    case OBJECT_PATCH:
+      return patch_intersect(o, d, tmin, tmax, p, object_side_data(ob), t, u, v);
   }
   return false;
 }
@@ -132,6 +135,10 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
     case OBJECT_POLYHEDRON:
       n = load3g(object_side_data(ob) + 4 * (int)hit.u);
       if (want_uv) *uv = polyhedron_uv(p, n);
+      break;
+    case OBJECT_PATCH:
+      n = patch_normal(object_side_data(ob), hit.u, hit.v);
+      if (want_uv) *uv = patch_uv(q, hit.u, hit.v);
       break;
     default:
       n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));

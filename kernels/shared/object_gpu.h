@@ -11,6 +11,7 @@
 #define OBJECT_QUADRIC 4
 #define OBJECT_POLYGON 5
 #define OBJECT_POLYHEDRON 6
+#define OBJECT_PATCH 7
 
 /* A polygon's point-in-polygon test (geometry/polygon.h). */
 #define POLYGON_CROSSING 0
@@ -53,7 +54,9 @@ typedef struct ObjectGpu {
    * count, inside test (POLYGON_*), orientation (+1 or -1) in the projection;
    * its vertices (xyz each) in side data; polyhedron: the plane count, its planes
    * (unit normal xyz, offset each) and then its box (min xyz, max xyz) in side
-   * data. */
+   * data; patch (a piece of a bicubic patch): the piece's u0, u1, v0, v1 in its
+   * patch, its box (min xyz, max xyz), Newton's tolerance, its 16 control
+   * points (xyz each, i along u, then j along v) in side data. */
   float p[12];
   /* Rows of the 3x4 world-to-object affine matrix. Object-space normals map back
    * with its transposed linear part. Smooth triangles: see OBJECT_FLAG_VERTEX_NORMALS. */

@@ -194,6 +194,24 @@ class Scene:
         obj = {"type": "polyhedron", "planes": np.asarray(planes, dtype=np.float64).reshape(-1, 4).tolist()}
         return self._add_json_object(obj, material, transform, transform_end)
 
+    def add_patches(self, control_points=None, file=None, method="subdivision", tolerance=None, material=None,
+                    transform=None, transform_end=None):
+        """Adds bicubic Bezier patches: `control_points` ((N, 16, 3): each patch's 4 x 4 net,
+        i along u then j along v, as a .bpt file lists them) or a .bpt `file`. `method`:
+        "subdivision" (triangles within `tolerance` of the surface) or "analytic" (Newton
+        iteration on patch pieces, to `tolerance` from the ray); `tolerance` None: the
+        method's default (docs/scene-format.md, Bezier patches). Returns its object index."""
+        if (control_points is None) == (file is None):
+            raise ValueError("add_patches: give control_points or file, not both or neither")
+        obj = {"type": "patches", "method": method}
+        if file is not None:
+            obj["file"] = str(file)
+        else:
+            obj["patches"] = np.asarray(control_points, dtype=np.float64).tolist()  # prism checks the shape
+        if tolerance is not None:
+            obj["tolerance"] = float(tolerance)
+        return self._add_json_object(obj, material, transform, transform_end)
+
     def _add_json_object(self, obj, material, transform, transform_end):
         if material is not None:
             obj["material"] = material

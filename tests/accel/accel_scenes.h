@@ -80,7 +80,8 @@ inline void appendFromJson(std::vector<ObjectGpu>& objects, const std::string& o
 // centre planes of a unit cube cell), and quadrics open and capped, placed by
 // transforms or by their coefficients, and polygons (one on x, y, z = 0.5
 // planes' neighbourhood, one convex, one not), and convex polyhedra (one
-// placed by a transform, one by its planes). Materials 1 and 2 are semitransparent.
+// placed by a transform, one by its planes), and the teapot's Bezier patches
+// (pieces for Newton iteration). Materials 1 and 2 are semitransparent.
 inline AccelScene mixedScene(std::size_t soup = 1500) {
   AccelScene s;
   s.name = "mixed";
@@ -176,7 +177,8 @@ inline AccelScene mixedScene(std::size_t soup = 1500) {
       }
       s.objects.push_back(g);
     }
-  // Quadrics and polygons last: their data records close the array.
+  // Quadrics, polygons, polyhedra and the teapot's patch pieces last: their
+  // data records close the array.
   appendFromJson(s.objects, R"([
       {"type": "cylinder", "radius": 0.08, "height": 0.3, "transform": {"translate": [0.2, 0.6, 0.8]}},
       {"type": "cylinder", "radius": 0.06, "height": 0.4, "capped": false,
@@ -198,7 +200,9 @@ inline AccelScene mixedScene(std::size_t soup = 1500) {
                                          [-1, 1, 1, -0.1], [-1, 1, -1, -0.1], [-1, -1, 1, -0.1], [-1, -1, -1, -0.1]],
        "transform": {"translate": [0.15, 0.15, 0.85]}},
       {"type": "polyhedron", "planes": [[1, 0, 0, -0.95], [-1, 0, 0, 0.85], [0, 1, 0, -0.95], [0, -1, 0, 0.8],
-                                         [0, 0, 1, -0.95], [0, 0, -1, 0.8], [1, 1, 1, -2.75]]}])",
+                                         [0, 0, 1, -0.95], [0, 0, -1, 0.8], [1, 1, 1, -2.75]]},
+      {"type": "patches", "file": ")" + prism_test::testDataDir() + R"(/patches/teapot.bpt", "method": "analytic",
+       "transform": [{"scale": 0.1}, {"rotate": {"axis": [1, 1, 0], "angle": 30}}, {"translate": [2.3, 0.5, 0.5]}]}])",
                 {0, 1, 2});
   return s;
 }

@@ -226,7 +226,7 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
           "bad.json: objects[0].material: unknown material 'glas' (known: default, glass, mirror)");
     CHECK(errorOf(R"({"objects": [{"type": "torus"}]})") ==
           "bad.json: objects[0].type: unknown object type 'torus' (expected sphere, box, plane, triangle, quadric, "
-          "cylinder, cone, ellipsoid, paraboloid, hyperboloid, polygon, polyhedron, mesh)");
+          "cylinder, cone, ellipsoid, paraboloid, hyperboloid, polygon, polyhedron, patches, mesh)");
     CHECK(errorOf("[]") == "bad.json: expected a JSON object at top level, got []");
   }
 

@@ -1,5 +1,5 @@
 // A primitive kind — sphere, box, plane, triangle, quadric, polygon,
-// polyhedron — in one place: how
+// polyhedron, patch — in one place: how
 // the scene format spells it and what makes it valid, its device record, its
 // bounds, its exact (or conservative) test against a cell of a spatial
 // subdivision, and a double-precision reference intersection. The kernel half
@@ -92,6 +92,6 @@ std::vector<std::string> objectKeys(std::initializer_list<const char*> own);
 
 // The kinds, each defined in its own file.
 extern const PrimitiveKind kSphereKind, kBoxKind, kPlaneKind, kTriangleKind, kQuadricKind, kPolygonKind,
-    kPolyhedronKind;
+    kPolyhedronKind, kPatchKind;
 
 }  // namespace prism

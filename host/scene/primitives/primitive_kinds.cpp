@@ -8,7 +8,8 @@ namespace prism {
 
 const std::vector<const PrimitiveKind*>& primitiveKinds() {
   static const std::vector<const PrimitiveKind*> kinds = {&kSphereKind, &kBoxKind, &kPlaneKind, &kTriangleKind,
-                                                             &kQuadricKind, &kPolygonKind, &kPolyhedronKind};
+                                                             &kQuadricKind, &kPolygonKind, &kPolyhedronKind,
+                                                             &kPatchKind};
   return kinds;
 }
 
