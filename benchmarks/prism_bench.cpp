@@ -16,6 +16,7 @@
 #include "firsthit_bench.h"  // prism-bench firsthit: parses its own options
 #include "patch_bench.h"     // prism-bench patches: parses its own options
 #include "polygon_bench.h"   // prism-bench polygons: parses its own options
+#include "shadows_bench.h"   // prism-bench shadows: parses its own options
 #include "povray_bench.h"    // prism-bench povray: parses its own options
 
 namespace {
@@ -27,6 +28,7 @@ const char* kUsage =
     "       prism-bench povray [options]               (see prism-bench povray --help)\n"
     "       prism-bench polygons [options]             (see prism-bench polygons --help)\n"
     "       prism-bench patches [options]              (see prism-bench patches --help)\n"
+    "       prism-bench shadows [options]              (see prism-bench shadows --help)\n"
     "       prism-bench mesh [--data DIR] NAME         the path of one ladder mesh, e.g.\n"
     "                                                  bunny/bunny_loop2_1.1M.ply (made if needed)\n"
     "\n"
@@ -116,6 +118,7 @@ int main(int argc, char** argv) {
   if (args[0] == "povray") return prism::bench::povrayMain(args);
   if (args[0] == "polygons") return prism::bench::polygonMain(args);
   if (args[0] == "patches") return prism::bench::patchMain(args);
+  if (args[0] == "shadows") return prism::bench::shadowsMain(args);
   if (args[0] == "mesh") return meshPathMain(args);
   if (args[0] != "accel")
     usageError("unknown command '" + args[0] + "' (expected accel, firsthit, distributed, povray, polygons or mesh)");

@@ -391,10 +391,20 @@ typedef enum PrismInsideTest {
   PRISM_INSIDE_LEFT_RIGHT = 2
 } PrismInsideTest;
 
+/* How point lights' shadow feelers find what is in the way: the acceleration
+ * structure, the light buffer (a direction cube per point light whose cells
+ * list the candidate occluders, docs/accel.md), or AUTO (the light buffer when
+ * its cells list few candidates, else the structure). The same shadows either way. */
+typedef enum PrismShadows {
+  PRISM_SHADOWS_AUTO = 0,
+  PRISM_SHADOWS_ACCEL = 1,
+  PRISM_SHADOWS_LIGHTBUFFER = 2
+} PrismShadows;
+
 /* Parse a lower-case name ("auto", "none", "grid", "quincunx", "adaptive", "jitter",
  * "poisson", "random"; "box", "tent", "gaussian", "mitchell"; "auto", "zbuffer",
- * "trace"; "crossing", "radial", "left-right"); the Name functions return it, or
- * NULL for an unknown value. */
+ * "trace"; "crossing", "radial", "left-right"; "auto", "accel", "lightbuffer");
+ * the Name functions return it, or NULL for an unknown value. */
 PRISM_API PrismStatus prismParseAa(const char* name, PrismAa* aa);
 PRISM_API const char* prismAaName(PrismAa aa);
 PRISM_API PrismStatus prismParseFilter(const char* name, PrismFilter* filter);
@@ -403,6 +413,8 @@ PRISM_API PrismStatus prismParseFirstHit(const char* name, PrismFirstHit* first_
 PRISM_API const char* prismFirstHitName(PrismFirstHit first_hit);
 PRISM_API PrismStatus prismParseInsideTest(const char* name, PrismInsideTest* inside_test);
 PRISM_API const char* prismInsideTestName(PrismInsideTest inside_test);
+PRISM_API PrismStatus prismParseShadows(const char* name, PrismShadows* shadows);
+PRISM_API const char* prismShadowsName(PrismShadows shadows);
 
 typedef struct PrismRenderOptions {
   size_t struct_size;  /* sizeof(PrismRenderOptions); set by prismGetRenderOptions */
@@ -420,6 +432,7 @@ typedef struct PrismRenderOptions {
   uint32_t aa_max_level; /* adaptive: most subdivisions of a pixel's side, 0..8 (default 2) */
   uint32_t profile;    /* nonzero: time each kernel on the device (prismGetKernelTime); 0 by default */
   uint32_t inside_test; /* a PrismInsideTest: for polygons that name none */
+  uint32_t shadows;     /* a PrismShadows: point lights' feelers */
 } PrismRenderOptions;
 
 /* Fills `options` with the scene's own settings (film and render blocks). */
@@ -441,6 +454,7 @@ typedef struct PrismRenderStats {
   uint32_t first_hit_used;     /* PRISM_FIRST_HIT_ZBUFFER or PRISM_FIRST_HIT_TRACE */
   double setup_seconds;        /* of `seconds`, before the first sample: scene, structure, kernels, uploads */
   double trace_seconds;        /* the rest: tracing, accumulation, resolve, read-back */
+  uint32_t shadows_used;       /* PRISM_SHADOWS_ACCEL or PRISM_SHADOWS_LIGHTBUFFER */
 } PrismRenderStats;
 
 /* After a render with options->profile set: how many kernels ran, and kernel

@@ -23,6 +23,7 @@
 #include "geometry/object.h"
 #include "sampling/dimensions.h"
 #include "shading/light.h"
+#include "shading/light_buffer.h"
 #include "shading/material.h"
 #include "shading/ray_io.h"
 #include "shading/texture.h"
@@ -75,7 +76,7 @@ inline float2 lobe_sample(uint seed, int strata, RayGpu ray, int lobe) {
 
 __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count, ACCEL_PARAMS,
                     __global const MaterialGpu* materials,
-                    __global const LightGpu* lights, int light_count, float4 ambient,
+                    __global const LightGpu* lights, int light_count, LIGHT_BUFFER_PARAMS, float4 ambient,
                     float4 background, int max_depth, float min_weight, uint seed, int strata,
                     __global ContributionGpu* emit, __global RayGpu* children, __global int* child_tags,
                     __global SurfaceGpu* surfaces,
@@ -151,7 +152,8 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
     if (dot(nf, ldir) <= 0.0f) continue; /* the light is behind the surface */
     ++feelers;
     float3 brought = scale * local_light_term(m, kd, nf, ldir, v);
-    light += brought * accel_transmittance(ACCEL_ARGS, materials, p_out, ldir, ray.time, 0.0f, dist);
+    light += brought * point_light_transmittance(ACCEL_ARGS, LIGHT_BUFFER_ARGS, materials, l, load3g(source->position),
+                                                 p_out, ldir, ray.time, dist);
   }
   emit[k] = contribution(weight * light, primary ? 1.0f : 0.0f, ray.pixel);
 

@@ -88,6 +88,9 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   const char* inside_test = insideTestNameOf(o.inside_test);
   if (!inside_test || !tryParseInsideTest(inside_test, &r.inside_test))
     throw std::invalid_argument("render options: unknown inside_test value " + std::to_string(o.inside_test));
+  const char* shadows = shadowsNameOf(o.shadows);
+  if (!shadows) throw std::invalid_argument("render options: unknown shadows value " + std::to_string(o.shadows));
+  r.shadows = parseShadowMode(shadows);
   r.aa_threshold = o.aa_threshold;
   r.aa_max_level = static_cast<int>(std::min<uint32_t>(o.aa_max_level, std::numeric_limits<int>::max()));
   r.profile = o.profile != 0;
@@ -136,6 +139,7 @@ void fillStats(const RenderStats& from, double kernel_build_seconds, PrismRender
   stats->first_hit_used = toC(from.first_hit);
   stats->setup_seconds = from.setup_seconds;
   stats->trace_seconds = from.seconds - from.setup_seconds;
+  prismParseShadows(shadowModeName(from.shadows), reinterpret_cast<PrismShadows*>(&stats->shadows_used));
 }
 
 bool aovChannelsOf(std::int64_t value, std::uint32_t* channels) {
@@ -290,6 +294,9 @@ PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions
   options->filter = static_cast<uint32_t>(r.filter);
   options->first_hit = toC(r.first_hit);
   options->inside_test = static_cast<uint32_t>(r.inside_test);
+  PrismShadows shadows = PRISM_SHADOWS_AUTO;
+  prismParseShadows(shadowModeName(r.shadows), &shadows);
+  options->shadows = shadows;
   options->aa_threshold = static_cast<float>(r.aa_threshold);
   options->aa_max_level = static_cast<uint32_t>(r.aa_max_level);
   return PRISM_OK;

@@ -27,6 +27,8 @@ const Named<PrismFilter> kFilterNames[] = {{"box", PRISM_FILTER_BOX},
                                            {"mitchell", PRISM_FILTER_MITCHELL}};
 const Named<PrismFirstHit> kFirstHitNames[] = {
     {"auto", PRISM_FIRST_HIT_AUTO}, {"zbuffer", PRISM_FIRST_HIT_ZBUFFER}, {"trace", PRISM_FIRST_HIT_TRACE}};
+const Named<PrismShadows> kShadowsNames[] = {
+    {"auto", PRISM_SHADOWS_AUTO}, {"accel", PRISM_SHADOWS_ACCEL}, {"lightbuffer", PRISM_SHADOWS_LIGHTBUFFER}};
 const Named<PrismInsideTest> kInsideTestTable[] = {
     {"crossing", PRISM_INSIDE_CROSSING}, {"radial", PRISM_INSIDE_RADIAL}, {"left-right", PRISM_INSIDE_LEFT_RIGHT}};
 
@@ -57,6 +59,7 @@ const char* aaNameOf(std::int64_t value) { return nameOf(kAaNames, value); }
 const char* filterNameOf(std::int64_t value) { return nameOf(kFilterNames, value); }
 const char* firstHitNameOf(std::int64_t value) { return nameOf(kFirstHitNames, value); }
 const char* insideTestNameOf(std::int64_t value) { return nameOf(kInsideTestTable, value); }
+const char* shadowsNameOf(std::int64_t value) { return nameOf(kShadowsNames, value); }
 
 extern "C" {
 
@@ -81,5 +84,9 @@ PRISM_API PrismStatus prismParseInsideTest(const char* name, PrismInsideTest* in
 PRISM_API const char* prismInsideTestName(PrismInsideTest inside_test) {
   return insideTestNameOf(enumValue(inside_test));
 }
+PRISM_API PrismStatus prismParseShadows(const char* name, PrismShadows* shadows) {
+  return parse(kShadowsNames, "prismParseShadows", "shadow mode", name, shadows);
+}
+PRISM_API const char* prismShadowsName(PrismShadows shadows) { return shadowsNameOf(enumValue(shadows)); }
 
 }  // extern "C"

@@ -140,6 +140,12 @@ Speed:
                     crossing (default, the Jordan curve test), radial (the
                     angle-sum test) or left-right (convex polygons only). All
                     three give the same image.
+  --shadows S       how point lights' shadow feelers find occluders: accel (the
+                    --accel structure), lightbuffer (a direction cube around
+                    each point light whose cells list the primitives in that
+                    direction; at most 64 point lights), or auto (default: the
+                    light buffer when its cells list few candidates). The same
+                    shadows either way.
 
 Device:
   --device D        the OpenCL device: an index from 'prism devices', 'cpu', 'gpu', or

@@ -18,6 +18,7 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--focus-distance", "", true}, {"--stats", "", false},
     {"--aa", "", true},        {"--filter", "", true},    {"--aa-threshold", "", true},
     {"--aa-max-level", "", true}, {"--first-hit", "", true}, {"--inside-test", "", true},
+    {"--shadows", "", true},
 };
 
 // The same list as the library's image writer, checked here so that a typo in -o
@@ -123,6 +124,12 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
     if (prismParseInsideTest(name->c_str(), &inside_test) != PRISM_OK)
       throw UsageError("--inside-test: unknown test '" + *name + "' (expected crossing, radial or left-right)");
     request.inside_test = inside_test;
+  }
+  if (const auto name = parsed.text("--shadows")) {
+    PrismShadows shadows;
+    if (prismParseShadows(name->c_str(), &shadows) != PRISM_OK)
+      throw UsageError("--shadows: unknown mode '" + *name + "' (expected auto, accel or lightbuffer)");
+    request.shadows = shadows;
   }
   request.camera_pos = parsed.triple("--camera-pos");
   request.camera_look = parsed.triple("--camera-look");

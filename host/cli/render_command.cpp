@@ -68,6 +68,7 @@ std::vector<Override> overridesOf(const RenderRequest& request) {
   add(r.aa_max_level.has_value(), "--aa-max-level", [&r](PrismRenderOptions& o) { o.aa_max_level = *r.aa_max_level; });
   add(r.first_hit.has_value(), "--first-hit", [&r](PrismRenderOptions& o) { o.first_hit = *r.first_hit; });
   add(r.inside_test.has_value(), "--inside-test", [&r](PrismRenderOptions& o) { o.inside_test = *r.inside_test; });
+  add(r.shadows.has_value(), "--shadows", [&r](PrismRenderOptions& o) { o.shadows = *r.shadows; });
   add(r.stats, "--stats", [](PrismRenderOptions& o) { o.profile = 1; });
   return out;
 }
@@ -191,14 +192,15 @@ void printSummary(const RenderRequest& request, const PrismRenderOptions& option
   const double mrays = stats.trace_seconds > 0.0 ? static_cast<double>(total) / stats.trace_seconds / 1e6 : 0.0;
   const char* accel = prismAccelName(static_cast<PrismAccel>(stats.accel));
   const char* first_hit = prismFirstHitName(static_cast<PrismFirstHit>(stats.first_hit_used));
+  const char* shadows = prismShadowsName(static_cast<PrismShadows>(stats.shadows_used));
   std::printf(
       "prism: rendered %ux%u at %u spp on '%s' with %s (built in %.2f s) in %.2f s (kernels %.2f s): "
-      "%s, %.3f rays/pixel, first hit by %s, set-up %.2f s, tracing %.2f s; "
+      "%s, %.3f rays/pixel, first hit by %s, shadows by %s, set-up %.2f s, tracing %.2f s; "
       "%llu primary, %llu reflected, %llu refracted, %llu shadow rays, %.2f Mrays/s -> %s\n",
       static_cast<unsigned>(options.width), static_cast<unsigned>(options.height),
       static_cast<unsigned>(options.spp), device.name, accel ? accel : "?", stats.accel_build_seconds,
       stats.seconds, stats.kernel_build_seconds, samplingText(options).c_str(), stats.rays_per_pixel,
-      first_hit ? first_hit : "?", stats.setup_seconds, stats.trace_seconds,
+      first_hit ? first_hit : "?", shadows ? shadows : "?", stats.setup_seconds, stats.trace_seconds,
       static_cast<unsigned long long>(stats.primary_rays),
       static_cast<unsigned long long>(stats.reflected_rays), static_cast<unsigned long long>(stats.refracted_rays),
       static_cast<unsigned long long>(stats.shadow_rays), mrays, request.output_path.c_str());

@@ -25,6 +25,25 @@ const char* firstHitName(FirstHitMode mode) {
   return "auto";
 }
 
+ShadowMode parseShadowMode(const std::string& name) {
+  if (name == "auto") return ShadowMode::Auto;
+  if (name == "accel") return ShadowMode::Accel;
+  if (name == "lightbuffer") return ShadowMode::LightBuffer;
+  throw std::invalid_argument("unknown shadow mode '" + name + "' (valid: " + kShadowModeNames + ")");
+}
+
+const char* shadowModeName(ShadowMode mode) {
+  switch (mode) {
+    case ShadowMode::Accel:
+      return "accel";
+    case ShadowMode::LightBuffer:
+      return "lightbuffer";
+    case ShadowMode::Auto:
+      break;
+  }
+  return "auto";
+}
+
 RenderOptions RenderOptions::fromScene(const Scene& scene) {
   RenderOptions o;
   o.width = scene.film.width;
@@ -39,6 +58,7 @@ RenderOptions RenderOptions::fromScene(const Scene& scene) {
   o.aa_threshold = scene.film.aa_threshold;
   o.aa_max_level = scene.film.aa_max_level;
   o.first_hit = parseFirstHitMode(scene.render.first_hit);
+  o.shadows = parseShadowMode(scene.render.shadows);
   if (!tryParseInsideTest(scene.render.inside_test, &o.inside_test))
     throw std::invalid_argument("unknown inside test '" + scene.render.inside_test + "' (expected " +
                                 kInsideTestNames + ")");

@@ -22,6 +22,15 @@ enum class FirstHitMode { Auto, ZBuffer, Trace };
 FirstHitMode parseFirstHitMode(const std::string& name);
 const char* firstHitName(FirstHitMode mode);
 
+// How point lights' shadow feelers find what is in the way: the acceleration
+// structure, the light buffer (render/light_buffer.h), or whichever the
+// renderer's cost model expects to be faster (auto).
+enum class ShadowMode { Auto, Accel, LightBuffer };
+constexpr const char* kShadowModeNames = "auto, accel, lightbuffer";
+// An unknown name throws std::invalid_argument listing them.
+ShadowMode parseShadowMode(const std::string& name);
+const char* shadowModeName(ShadowMode mode);
+
 struct RenderOptions {
   int width = 640;
   int height = 480;
@@ -37,6 +46,7 @@ struct RenderOptions {
   int aa_max_level = 2;                 // adaptive: most splits of a pixel's side
   FirstHitMode first_hit = FirstHitMode::Auto;
   InsideTest inside_test = InsideTest::Crossing;  // for polygons that name none
+  ShadowMode shadows = ShadowMode::Auto;          // point lights' feelers
   // Time every kernel launch on the device (RenderStats::kernels); each launch
   // then keeps an event until the render ends.
   bool profile = false;

@@ -11,6 +11,7 @@
 #include "kernels/shared/hit_gpu.h"
 #include "kernels/shared/ray_gpu.h"
 #include "kernels/shared/surface_gpu.h"
+#include "render/light_buffer.h"
 
 namespace prism {
 namespace {
@@ -131,7 +132,23 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
     result.stats.accel = accel->kind;  // what auto chose
     result.stats.accel_stats = accel->stats;
     m_extend = m_context.kernel("extend.cl", "extend", accel->kernel_options);
-    m_shade = m_context.kernel("shade.cl", "shade", accel->kernel_options + features.shading);
+    // Point lights' feelers: through the light buffer or the structure.
+    LightBuffer light_buffer;
+    result.stats.shadows = planShadows(options.shadows, accel->kind, gpu.objects, gpu.lights, &light_buffer);
+    const bool use_light_buffer = result.stats.shadows == ShadowMode::LightBuffer;
+    if (use_light_buffer) result.stats.light_buffer_candidates = light_buffer.mean_candidates;
+    if (light_buffer.cells.empty()) light_buffer.cells.assign(2, 0);  // (bound, never read)
+    if (light_buffer.ids.empty()) light_buffer.ids.push_back(0);
+    if (light_buffer.windows.empty()) light_buffer.windows.assign(4, 0.0f);
+    m_light_buffer_cells = Buffer(m_context, light_buffer.cells.size() * sizeof(std::int32_t));
+    m_light_buffer_cells.writeVector(light_buffer.cells);
+    m_light_buffer_ids = Buffer(m_context, light_buffer.ids.size() * sizeof(std::int32_t));
+    m_light_buffer_ids.writeVector(light_buffer.ids);
+    m_light_buffer_windows = Buffer(m_context, light_buffer.windows.size() * sizeof(float));
+    m_light_buffer_windows.writeVector(light_buffer.windows);
+    m_light_buffer_resolution = light_buffer.resolution;
+    m_shade = m_context.kernel("shade.cl", "shade",
+                               accel->kernel_options + features.shading + (use_light_buffer ? " -DPRISM_LIGHT_BUFFER" : ""));
     if (m_shadow_slots > 0) {
       m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shadows);
       m_occlude = m_context.kernel("occlude.cl", "occlude", accel->kernel_options);
@@ -383,6 +400,10 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
       .arg(m_materials)
       .arg(m_lights)
       .arg(light_count)
+      .arg(m_light_buffer_cells)
+      .arg(m_light_buffer_ids)
+      .arg(m_light_buffer_windows)
+      .arg(static_cast<cl_int>(m_light_buffer_resolution))
       .arg(ambient)
       .arg(background)
       .arg(opt.max_depth)

@@ -35,6 +35,8 @@ struct RenderStats {
   AaMode aa = AaMode::None;          // the anti-aliasing mode used (the default resolved)
   FilterKind filter = FilterKind::Box;  // the filter applied (tent for quincunx; unused by adaptive)
   FirstHitMode first_hit = FirstHitMode::Trace;  // how wave 0 found its hits: ZBuffer or Trace
+  ShadowMode shadows = ShadowMode::Accel;  // how point lights' feelers were traced (never Auto)
+  double light_buffer_candidates = 0;  // with the light buffer: the mean length of a cell's list
   double rays_per_pixel = 0;         // primary samples / pixels
   int film_batches = 0;              // adaptive: trips of sample colours from the device film to the host
   // Set-up before the first sample: flattening the scene, building the structure,
@@ -151,6 +153,9 @@ class Renderer {
   size_t m_film_batch_slices = 256;
   AccelBuildOptions m_accel_build;
   AccelBuffers m_accel;
+  // render/light_buffer.h (a word or four each without it)
+  Buffer m_light_buffer_cells, m_light_buffer_ids, m_light_buffer_windows;
+  int m_light_buffer_resolution = 1;
   Buffer m_camera, m_objects, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
   Buffer m_film;       // rgba per primary sample, indexed by the sample's key
   Buffer m_sample_xy;  // film positions of all samples (for resolve)

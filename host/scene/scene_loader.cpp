@@ -183,7 +183,8 @@ class SceneParser : private JsonReader {
 
   void parseRender(const Json& v, const std::string& path) {
     checkObject(v, path,
-                {"max_depth", "min_weight", "ambient", "background", "seed", "accel", "first_hit", "inside_test"});
+                {"max_depth", "min_weight", "ambient", "background", "seed", "accel", "first_hit", "inside_test",
+                 "shadows"});
     RenderSettings& r = m_scene.render;
     if (const Json* p = find(v, "max_depth"))
       r.max_depth = int(integer(*p, member(path, "max_depth"), 0, kMaxDepth));
@@ -212,6 +213,12 @@ class SceneParser : private JsonReader {
       if (!tryParseInsideTest(name, &test))
         fail(member(path, "inside_test"), "unknown inside test '" + name + "' (expected " + kInsideTestNames + ")");
       r.inside_test = name;
+    }
+    if (const Json* p = find(v, "shadows")) {
+      const std::string name = string(*p, member(path, "shadows"), "a string (auto, accel, lightbuffer)");
+      if (name != "auto" && name != "accel" && name != "lightbuffer")
+        fail(member(path, "shadows"), "unknown shadow mode '" + name + "' (expected auto, accel, lightbuffer)");
+      r.shadows = name;
     }
   }
 

@@ -46,7 +46,7 @@ class RenderOptions(Structure):
     _fields_ = [("struct_size", c_size_t), ("width", c_uint32), ("height", c_uint32), ("spp", c_uint32),
                 ("max_depth", c_uint32), ("min_weight", c_float), ("seed", c_uint64), ("accel", c_uint32),
                 ("aa", c_uint32), ("filter", c_uint32), ("first_hit", c_uint32), ("aa_threshold", c_float),
-                ("aa_max_level", c_uint32), ("profile", c_uint32), ("inside_test", c_uint32)]
+                ("aa_max_level", c_uint32), ("profile", c_uint32), ("inside_test", c_uint32), ("shadows", c_uint32)]
 
 
 class RenderStats(Structure):
@@ -54,7 +54,8 @@ class RenderStats(Structure):
                 ("primary_rays", c_uint64), ("reflected_rays", c_uint64), ("refracted_rays", c_uint64),
                 ("shadow_rays", c_uint64), ("waves", c_uint32), ("rays_per_depth", c_uint64 * 32),
                 ("accel", c_uint32), ("accel_build_seconds", c_double), ("rays_per_pixel", c_double),
-                ("first_hit_used", c_uint32), ("setup_seconds", c_double), ("trace_seconds", c_double)]
+                ("first_hit_used", c_uint32), ("setup_seconds", c_double), ("trace_seconds", c_double),
+                ("shadows_used", c_uint32)]
 
 
 class Material(Structure):
@@ -112,6 +113,8 @@ _FUNCTIONS = {
     "prismParseFilter": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismParseFirstHit": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismParseInsideTest": (Status, [c_char_p, POINTER(c_uint32)]),
+    "prismParseShadows": (Status, [c_char_p, POINTER(c_uint32)]),
+    "prismShadowsName": (c_char_p, [c_uint32]),
     "prismParseAov": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismGetAovChannels": (Status, [c_uint32, POINTER(c_uint32)]),
     "prismGetRenderOptions": (Status, [c_void_p, POINTER(RenderOptions)]),

@@ -15,7 +15,8 @@ HIT_DTYPE = np.dtype([("t", np.float32), ("prim", np.int32), ("u", np.float32), 
 assert RAY_DTYPE.itemsize == 32 and HIT_DTYPE.itemsize == 16
 
 _ENUM_OPTIONS = {"accel": lib.prismParseAccel, "aa": lib.prismParseAa, "filter": lib.prismParseFilter,
-                 "first_hit": lib.prismParseFirstHit, "inside_test": lib.prismParseInsideTest}
+                 "first_hit": lib.prismParseFirstHit, "inside_test": lib.prismParseInsideTest,
+                 "shadows": lib.prismParseShadows}
 _PLAIN_OPTIONS = ("width", "height", "spp", "max_depth", "min_weight", "seed", "aa_threshold", "aa_max_level")
 
 
@@ -118,7 +119,7 @@ class Context:
     def render(self, scene, aovs=(), progress=None, **options):
         """Renders `scene`; returns a Render. `options`: width, height, spp,
         max_depth, min_weight, seed, accel, aa, filter, first_hit, inside_test,
-        aa_threshold, aa_max_level (the scene's own where not given). `aovs`: names among depth,
+        shadows, aa_threshold, aa_max_level (the scene's own where not given). `aovs`: names among depth,
         normal, primid, albedo. `progress(fraction)` is called as the render goes;
         return True from it to cancel (prism.Cancelled is raised)."""
         o = self.options(scene, **options)
@@ -177,4 +178,5 @@ def _stats_dict(s):
     return {"seconds": s.seconds, "setup_seconds": s.setup_seconds, "trace_seconds": s.trace_seconds,
             "kernel_build_seconds": s.kernel_build_seconds, "primary_rays": s.primary_rays,
             "reflected_rays": s.reflected_rays, "refracted_rays": s.refracted_rays, "shadow_rays": s.shadow_rays,
-            "rays_per_depth": [s.rays_per_depth[i] for i in range(min(s.waves, 32))]}
+            "rays_per_depth": [s.rays_per_depth[i] for i in range(min(s.waves, 32))],
+            "shadows": (lib.prismShadowsName(s.shadows_used) or b"?").decode()}

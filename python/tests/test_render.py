@@ -204,3 +204,13 @@ def test_patches_given_as_arrays_render_as_the_same_file_and_both_methods_agree(
         prism.Scene().add_patches()
     with pytest.raises(prism.Error, match="16 control points"):
         prism.Scene().add_patches(control_points=np.zeros((1, 15, 3)))
+
+
+def test_the_light_buffer_casts_the_structures_shadows(ctx, scenes_dir):
+    scene = prism.Scene.load(os.path.join(scenes_dir, "whitted.json"))
+    a = ctx.render(scene, width=64, height=48, shadows="accel")
+    b = ctx.render(scene, width=64, height=48, shadows="lightbuffer")
+    assert a.stats["shadows"] == "accel" and b.stats["shadows"] == "lightbuffer"
+    assert np.abs(a.rgba - b.rgba).max() <= 1e-6
+    with pytest.raises(prism.Error, match="unknown shadow mode"):
+        ctx.render(scene, shadows="shadowmap")

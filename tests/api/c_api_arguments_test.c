@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   PrismAa aa;
   PrismFilter filter;
   PrismFirstHit first_hit;
+  PrismShadows shadows;
   PrismAov aov;
   PrismRay ray;
   PrismHit hit;
@@ -208,12 +209,16 @@ int main(int argc, char** argv) {
   BAD(prismParseFilter("box", NULL), "prismParseFilter");
   BAD(prismParseFirstHit(NULL, &first_hit), "prismParseFirstHit");
   BAD(prismParseFirstHit("auto", NULL), "prismParseFirstHit");
+  BAD(prismParseShadows(NULL, &shadows), "prismParseShadows");
+  BAD(prismParseShadows("auto", NULL), "prismParseShadows");
+  BAD(prismParseShadows("shadowmap", &shadows), "unknown shadow mode 'shadowmap' (expected auto, accel, lightbuffer)");
   BAD(prismParseAov(NULL, &aov), "prismParseAov");
   BAD(prismParseAov("depth", NULL), "prismParseAov");
   BAD(prismGetAovChannels((PrismAov)99, &u32), "prismGetAovChannels");
   BAD(prismGetAovChannels(PRISM_AOV_DEPTH, NULL), "prismGetAovChannels");
   if (prismAccelName((PrismAccel)99) != NULL || prismAaName((PrismAa)99) != NULL ||
       prismFilterName((PrismFilter)99) != NULL || prismFirstHitName((PrismFirstHit)99) != NULL ||
+      prismShadowsName((PrismShadows)99) != NULL ||
       prismStatusName((PrismStatus)999) == NULL) {
     fprintf(stderr, "names of unknown values: NULL (a status: a text that says unknown)\n");
     ++failures;
