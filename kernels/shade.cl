@@ -75,7 +75,7 @@ inline float2 lobe_sample(uint seed, int strata, RayGpu ray, int lobe) {
 }
 
 __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count, ACCEL_PARAMS,
-                    __global const MaterialGpu* materials,
+                    __global const MaterialGpu* materials, __global const float4* texels,
                     __global const LightGpu* lights, int light_count, LIGHT_BUFFER_PARAMS, float4 ambient,
                     float4 background, int max_depth, float min_weight, uint seed, int strata,
                     __global ContributionGpu* emit, __global RayGpu* children, __global int* child_tags,
@@ -134,7 +134,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   bool inside = dot(n, i_dir) > 0.0f;
   float3 nf = inside ? -n : n; /* normal on the side the ray came from */
   float3 v = -i_dir;
-  float3 tex = texture_color(m, uv);
+  float3 tex = texture_color(m, texels, uv);
   float3 kd = load3g(m->diffuse) * tex;
   float eps = surface_epsilon(p);
   float3 p_out = p + eps * nf; /* just off the surface, on the viewer's side */

@@ -21,7 +21,7 @@ static_assert(offsetof(RayGpu, dx) == 16 && offsetof(RayGpu, wr) == 32 && offset
 static_assert(sizeof(HitGpu) == 16 && offsetof(HitGpu, prim) == 4 && offsetof(HitGpu, v) == 12, "HitGpu layout");
 static_assert(sizeof(ObjectGpu) == 112 && offsetof(ObjectGpu, p) == 16 && offsetof(ObjectGpu, world_to_object) == 64,
               "ObjectGpu layout");
-static_assert(sizeof(MaterialGpu) == 128 && offsetof(MaterialGpu, gloss) == 108 && offsetof(MaterialGpu, roughness) == 116 && offsetof(MaterialGpu, checker2) == 64 &&
+static_assert(sizeof(MaterialGpu) == 144 && offsetof(MaterialGpu, image_offset) == 124 && offsetof(MaterialGpu, gloss) == 108 && offsetof(MaterialGpu, roughness) == 116 && offsetof(MaterialGpu, checker2) == 64 &&
                   offsetof(MaterialGpu, shininess) == 80 && offsetof(MaterialGpu, model) == 96,
               "MaterialGpu layout");
 static_assert(sizeof(LightGpu) == 96 && offsetof(LightGpu, color) == 16 && offsetof(LightGpu, normal) == 64 &&

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -81,16 +82,19 @@ void appendMesh(const Object& ob, const FlattenSettings& settings, std::vector<O
     const int file_material = mesh.triangle_materials.empty() ? -1 : mesh.triangle_materials[t];
     return ob.material_override || file_material < 0 ? ob.material : ob.mesh_material_offset + file_material;
   };
+  const bool textured = mesh.texcoords.size() == 2 * mesh.vertexCount();
   auto appendTriangle = [&](std::size_t t) {
     ObjectGpu g{};
     g.type = OBJECT_TRIANGLE;
     g.material = material(t);
+    float* uv[6] = {&g.p[9], &g.p[10], &g.p[11], &g.world_to_object[9], &g.world_to_object[10], &g.world_to_object[11]};
     for (int k = 0; k < 3; ++k) {
       std::uint32_t v = mesh.indices[3 * t + k];
       put3(g.p + 3 * k, world[v]);
       if (smooth) put3(g.world_to_object + 3 * k, world_normals[v]);
+      if (textured) *uv[2 * k] = mesh.texcoords[2 * v], *uv[2 * k + 1] = mesh.texcoords[2 * v + 1];
     }
-    g.flags = smooth ? OBJECT_FLAG_VERTEX_NORMALS : 0;
+    g.flags = (smooth ? OBJECT_FLAG_VERTEX_NORMALS : 0) | (textured ? OBJECT_FLAG_TEXCOORDS : 0);
     out.push_back(g);
   };
   if (ob.polygon_faces.empty()) {
@@ -290,7 +294,27 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
     setSideDataOffset(g.objects[i], static_cast<int>(record - i));
   }
   g.primitive_count = primitives;
-  for (const Material& m : scene.materials) g.materials.push_back(flattenMaterial(m));
+  std::map<const ImageTexture*, int> image_offsets;  // each image's texels once, however many materials use it
+  for (const Material& m : scene.materials) {
+    MaterialGpu mg = flattenMaterial(m);
+    if (const ImageTexture* image = m.texture.kind == Texture::Kind::Image ? m.texture.image.get() : nullptr) {
+      auto [it, fresh] = image_offsets.emplace(image, static_cast<int>(g.texels.size() / 4));
+      if (fresh) {
+        const std::size_t texels = static_cast<std::size_t>(image->width) * image->height;
+        if (g.texels.size() / 4 + texels > kMaxTextureTexels)
+          throw std::invalid_argument("textures: the scene's images hold more than " +
+                                      std::to_string(kMaxTextureTexels) + " texels together (at '" + image->file + "')");
+        for (std::size_t t = 0; t < texels; ++t)
+          g.texels.insert(g.texels.end(), {image->rgb[3 * t], image->rgb[3 * t + 1], image->rgb[3 * t + 2], 1.0f});
+      }
+      mg.image_offset = it->second;
+      mg.image_width = image->width;
+      mg.image_height = image->height;
+      mg.wrap = static_cast<int>(m.texture.wrap);
+    }
+    g.materials.push_back(mg);
+  }
+  if (g.texels.empty()) g.texels.assign(4, 0.0f);  // (a buffer cannot be empty)
   for (const Light& l : scene.lights) g.lights.push_back(flattenLight(l, std::max(1, options.spp)));
   put4(g.ambient, scene.render.ambient);
   put4(g.background, scene.render.background);

@@ -20,6 +20,9 @@ struct GpuScene {
   std::vector<ObjectGpu> objects;
   std::size_t primitive_count = 0;
   std::vector<MaterialGpu> materials;
+  // The image textures' texels, each image once: linear RGB, float4 each
+  // (MaterialGpu::image_offset counts in them); at least one texel.
+  std::vector<float> texels;
   std::vector<LightGpu> lights;
   CameraGpu camera{};
   float ambient[4] = {0, 0, 0, 0};     // render.ambient, rgb

@@ -160,6 +160,8 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   }
   m_materials = Buffer(m_context, gpu.materials.size() * sizeof(MaterialGpu));
   m_materials.writeVector(gpu.materials);
+  m_texels = Buffer(m_context, gpu.texels.size() * sizeof(float));
+  m_texels.writeVector(gpu.texels);
   m_lights = Buffer(m_context, gpu.lights.size() * sizeof(LightGpu));
   m_lights.writeVector(gpu.lights);
   m_aov_depth = Buffer(m_context, pixels * sizeof(float));
@@ -398,6 +400,7 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
   shade.arg(m_work).arg(m_hits).arg(static_cast<int>(n));
   m_accel.bind(shade, m_objects, object_count)
       .arg(m_materials)
+      .arg(m_texels)
       .arg(m_lights)
       .arg(light_count)
       .arg(m_light_buffer_cells)

@@ -156,6 +156,7 @@ class Renderer {
   // render/light_buffer.h (a word or four each without it)
   Buffer m_light_buffer_cells, m_light_buffer_ids, m_light_buffer_windows;
   int m_light_buffer_resolution = 1;
+  Buffer m_texels;  // image textures (GpuScene::texels)
   Buffer m_camera, m_objects, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
   Buffer m_film;       // rgba per primary sample, indexed by the sample's key
   Buffer m_sample_xy;  // film positions of all samples (for resolve)

@@ -3,11 +3,39 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "scene/primitives/polygon_shape.h"
 
 namespace prism {
+namespace {
+
+// The file's materials that name a diffuse map (MTL map_Kd) get it as their
+// image texture, each file read once; one that cannot be read is a warning,
+// and its material keeps its plain colour.
+void attachDiffuseMaps(Scene& scene, std::size_t first, const std::string& source) {
+  std::map<std::string, SharedImage> read;
+  for (std::size_t i = first; i < scene.materials.size(); ++i) {
+    Material& m = scene.materials[i];
+    if (m.diffuse_map.empty() || m.texture.kind != Texture::Kind::None) continue;
+    auto it = read.find(m.diffuse_map);
+    if (it == read.end()) {
+      SharedImage image;
+      try {
+        image = readImageTexture(m.diffuse_map, std::nullopt);
+      } catch (const ImageTextureError& e) {
+        scene.warnings.push_back(source + ": material '" + m.name + "': map_Kd not used: " + e.what());
+      }
+      it = read.emplace(m.diffuse_map, image).first;
+    }
+    if (!it->second) continue;
+    m.texture.kind = Texture::Kind::Image;
+    m.texture.image = it->second;
+  }
+}
+
+}  // namespace
 
 Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth) {
   Object o;
@@ -23,6 +51,7 @@ Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const 
   if (o.mesh_material_offset < 0) {
     o.mesh_material_offset = static_cast<int>(scene.materials.size());
     scene.materials.insert(scene.materials.end(), mesh->materials.begin(), mesh->materials.end());
+    attachDiffuseMaps(scene, o.mesh_material_offset, mesh->source);
   }
   scene.objects.push_back(std::move(o));
   return scene.objects.back();

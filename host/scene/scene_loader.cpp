@@ -297,14 +297,39 @@ class SceneParser : private JsonReader {
   }
 
   Texture parseTexture(const Json& v, const std::string& path) {
-    checkObject(v, path, {"type", "color1", "color2", "scale"});
     Texture t;
-    const std::string type = string(require(v, path, "type"), member(path, "type"), "a string (checker)");
-    if (type != "checker")
-      fail(member(path, "type"), "unknown texture type '" + type + "' (expected checker)");
-    t.kind = Texture::Kind::Checker;
-    if (const Json* p = find(v, "color1")) t.color1 = colour(*p, member(path, "color1"));
-    if (const Json* p = find(v, "color2")) t.color2 = colour(*p, member(path, "color2"));
+    const std::string type =
+        string(require(v, path, "type"), member(path, "type"), "a string (checker, image)");
+    if (type == "image") {
+      checkObject(v, path, {"type", "file", "wrap", "srgb", "scale"});
+      t.kind = Texture::Kind::Image;
+      const std::string file_at = member(path, "file");
+      const std::string file = filePath(string(require(v, path, "file"), file_at, "an image file name (.png, .jpg, .exr, ...)"));
+      std::optional<bool> srgb;
+      if (const Json* p = find(v, "srgb")) {
+        if (!p->is_boolean()) expected(member(path, "srgb"), "true or false", *p);
+        srgb = p->get<bool>();
+      }
+      try {
+        t.image = readImageTexture(file, srgb);
+      } catch (const ImageTextureError& e) {
+        fail(file_at, e.what());
+      }
+      if (const Json* p = find(v, "wrap")) {
+        const std::string wrap = string(*p, member(path, "wrap"), "a string (repeat, clamp, mirror)");
+        if (wrap == "repeat") t.wrap = Texture::Wrap::Repeat;
+        else if (wrap == "clamp") t.wrap = Texture::Wrap::Clamp;
+        else if (wrap == "mirror") t.wrap = Texture::Wrap::Mirror;
+        else fail(member(path, "wrap"), "unknown wrap mode '" + wrap + "' (expected repeat, clamp, mirror)");
+      }
+    } else if (type == "checker") {
+      checkObject(v, path, {"type", "color1", "color2", "scale"});
+      t.kind = Texture::Kind::Checker;
+      if (const Json* p = find(v, "color1")) t.color1 = colour(*p, member(path, "color1"));
+      if (const Json* p = find(v, "color2")) t.color2 = colour(*p, member(path, "color2"));
+    } else {
+      fail(member(path, "type"), "unknown texture type '" + type + "' (expected checker, image)");
+    }
     if (const Json* p = find(v, "scale"))
       t.scale = number(*p, member(path, "scale"), "a positive number", [](double x) { return x > 0; });
     return t;

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "scene/image_texture.h"
 #include "scene/vec3.h"
 
 namespace prism {
@@ -11,11 +12,17 @@ enum class ShadingModel { Phong = 0, Blinn = 1, CookTorrance = 2 };
 enum class MicrofacetDistribution { Beckmann = 0, Ggx = 1 };
 
 struct Texture {
-  enum class Kind { None = 0, Checker = 1 };
+  enum class Kind { None = 0, Checker = 1, Image = 2 };
+  // How an image repeats beyond [0, 1] (TEXTURE_WRAP_* in kernels/shared/material_gpu.h).
+  enum class Wrap { Repeat = 0, Clamp = 1, Mirror = 2 };
   Kind kind = Kind::None;
   Vec3 color1{1, 1, 1};
   Vec3 color2{0, 0, 0};
-  double scale = 1;  // size of one checker square in surface units
+  // Checker: the size of one square in surface units; image: the size of
+  // the whole image in texture coordinates.
+  double scale = 1;
+  SharedImage image;  // Image: its linear texels
+  Wrap wrap = Wrap::Repeat;
 };
 
 struct Material {

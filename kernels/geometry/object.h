@@ -143,6 +143,10 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
     default:
       n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));
       *uv = (float2)(hit.u, hit.v);
+      if (ob->flags & OBJECT_FLAG_TEXCOORDS) {
+        __global const float* w = ob->world_to_object;
+        *uv = (1.0f - hit.u - hit.v) * (float2)(q[9], q[10]) + hit.u * (float2)(q[11], w[9]) + hit.v * (float2)(w[10], w[11]);
+      }
       if (ob->flags & OBJECT_FLAG_VERTEX_NORMALS) {
         __global const float* vn = ob->world_to_object;
         float3 smooth = (1.0f - hit.u - hit.v) * load3g(vn) + hit.u * load3g(vn + 3) + hit.v * load3g(vn + 6);

@@ -11,6 +11,12 @@
 
 #define TEXTURE_NONE 0
 #define TEXTURE_CHECKER 1
+#define TEXTURE_IMAGE 2
+
+/* How an image texture repeats beyond [0, 1]. */
+#define TEXTURE_WRAP_REPEAT 0
+#define TEXTURE_WRAP_CLAMP 1
+#define TEXTURE_WRAP_MIRROR 2
 
 typedef struct MaterialGpu {
   float ambient[4]; /* rgb + unused lane, so each colour is one float4 */
@@ -33,6 +39,12 @@ typedef struct MaterialGpu {
    * alpha) and their distribution (MICROFACET_*). */
   float roughness;
   int distribution;
+  /* An image texture: its first texel in the scene's texel array (linear
+   * RGB, float4 each, rows top to bottom), its size and TEXTURE_WRAP_* mode. */
+  int image_offset;
+  int image_width;
+  int image_height;
+  int wrap;
   int pad;
 } MaterialGpu;
 

@@ -24,6 +24,10 @@
 #define OBJECT_FLAG_VERTEX_NORMALS 1
 /* A quadric closed by its clip box's faces (geometry/quadric.h). */
 #define OBJECT_FLAG_CAPPED 2
+/* A mesh triangle with texture coordinates at its vertices, in the words the
+ * vertices leave free: (p[9], p[10]), (p[11], world_to_object[9]),
+ * (world_to_object[10], world_to_object[11]). */
+#define OBJECT_FLAG_TEXCOORDS 4
 
 /* has_transform values. A moving object keeps its geometry (and vertex normals)
  * in object space; its world-to-object matrix is made per ray, at the ray's
