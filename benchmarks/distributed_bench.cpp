@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "bench_options.h"
 #include "accel_workloads.h"
 #include "device/device_list.h"
 #include "kernels/shared/ray_gpu.h"
@@ -109,40 +110,23 @@ Run timeRender(Renderer& renderer, const Scene& scene, const RenderOptions& opti
 int distributedMain(const std::vector<std::string>& args) {
   std::string device_name, scenes_dir = PRISM_SOURCE_DIR "/scenes";
   int width = 160, height = 120, spp = 16, repeats = 3;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) {
-        std::cerr << "prism-bench distributed: " << a << " needs a value\n\n" << kUsage;
-        std::exit(2);
-      }
-      return args[++i];
-    };
-    try {
-      if (a == "--help" || a == "-h") {
-        std::cout << kUsage;
-        return 0;
-      } else if (a == "--device") {
-        device_name = value();
-      } else if (a == "--size") {
-        const std::string v = value();
-        if (std::sscanf(v.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1)
-          throw std::invalid_argument("--size: expected WxH, got '" + v + "'");
-      } else if (a == "--spp") {
-        spp = std::stoi(value());
-        if (spp < 2) throw std::invalid_argument("--spp: expected at least 2");
-      } else if (a == "--repeat") {
-        repeats = std::max(1, std::stoi(value()));
-      } else if (a == "--scenes") {
-        scenes_dir = value();
-      } else {
-        throw std::invalid_argument("unknown option '" + a + "'");
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "prism-bench distributed: " << e.what() << "\n\n" << kUsage;
-      return 2;
+  const int status = parseBenchOptions(args, "distributed", kUsage, [&](const std::string& a, const OptionValue& value) {
+    if (a == "--device") {
+      device_name = value();
+    } else if (a == "--size") {
+      parseSize(a, value(), &width, &height);
+    } else if (a == "--spp") {
+      spp = std::stoi(value());
+      if (spp < 2) throw std::invalid_argument("--spp: expected at least 2");
+    } else if (a == "--repeat") {
+      repeats = std::max(1, std::stoi(value()));
+    } else if (a == "--scenes") {
+      scenes_dir = value();
+    } else {
+      throw std::invalid_argument("unknown option '" + a + "'");
     }
-  }
+  });
+  if (status >= 0) return status;
   try {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a line at a time: the runs are long
     DeviceDescription device = selectDevice(device_name);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "accel_workloads.h"
+#include "bench_options.h"
 #include "device/context.h"
 #include "device/device_list.h"
 #include "render/gpu_scene.h"
@@ -69,45 +70,30 @@ int patchMain(const std::vector<std::string>& args) {
   std::vector<double> tolerances = {0.004, 0.001, 0.00025};
   int camera = 512, repeats = 3;
   std::size_t random_count = 262144, check = 2000;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) {
-        std::cerr << "prism-bench patches: " << a << " needs a value\n\n" << kUsage;
-        std::exit(2);
-      }
-      return args[++i];
-    };
-    try {
-      if (a == "--help" || a == "-h") {
-        std::cout << kUsage;
-        return 0;
-      } else if (a == "--device") {
-        device_name = value();
-      } else if (a == "--file") {
-        file = value();
-      } else if (a == "--tolerances") {
-        tolerances.clear();
-        std::stringstream ss(value());
-        for (std::string s; std::getline(ss, s, ',');) tolerances.push_back(std::stod(s));
-        for (double t : tolerances)
-          if (!(t >= 1e-6 && t < 1)) throw std::invalid_argument("--tolerances: each must be in [1e-6, 1)");
-      } else if (a == "--camera") {
-        camera = std::max(1, std::stoi(value()));
-      } else if (a == "--random") {
-        random_count = std::stoul(value());
-      } else if (a == "--check") {
-        check = std::stoul(value());
-      } else if (a == "--repeat") {
-        repeats = std::max(1, std::stoi(value()));
-      } else {
-        throw std::invalid_argument("unknown option '" + a + "'");
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "prism-bench patches: " << e.what() << "\n\n" << kUsage;
-      return 2;
+  const int status = parseBenchOptions(args, "patches", kUsage, [&](const std::string& a, const OptionValue& value) {
+    if (a == "--device") {
+      device_name = value();
+    } else if (a == "--file") {
+      file = value();
+    } else if (a == "--tolerances") {
+      tolerances.clear();
+      std::stringstream ss(value());
+      for (std::string s; std::getline(ss, s, ',');) tolerances.push_back(std::stod(s));
+      for (double t : tolerances)
+        if (!(t >= 1e-6 && t < 1)) throw std::invalid_argument("--tolerances: each must be in [1e-6, 1)");
+    } else if (a == "--camera") {
+      camera = std::max(1, std::stoi(value()));
+    } else if (a == "--random") {
+      random_count = std::stoul(value());
+    } else if (a == "--check") {
+      check = std::stoul(value());
+    } else if (a == "--repeat") {
+      repeats = std::max(1, std::stoi(value()));
+    } else {
+      throw std::invalid_argument("unknown option '" + a + "'");
     }
-  }
+  });
+  if (status >= 0) return status;
   try {
     const double size = patchSetSize(readBptFile(file));
     std::vector<Variant> variants;

@@ -8,6 +8,7 @@
 #include <random>
 #include <sstream>
 
+#include "bench_options.h"
 #include "device/context.h"
 #include "device/device_list.h"
 #include "render/gpu_scene.h"
@@ -67,39 +68,24 @@ int polygonMain(const std::vector<std::string>& args) {
   std::vector<int> sides = {4, 16, 64};
   std::size_t ray_count = 1 << 18;
   int repeats = 3;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) {
-        std::cerr << "prism-bench polygons: " << a << " needs a value\n\n" << kUsage;
-        std::exit(2);
-      }
-      return args[++i];
-    };
-    try {
-      if (a == "--help" || a == "-h") {
-        std::cout << kUsage;
-        return 0;
-      } else if (a == "--device") {
-        device_name = value();
-      } else if (a == "--sides") {
-        sides.clear();
-        std::stringstream ss(value());
-        for (std::string s; std::getline(ss, s, ',');) sides.push_back(std::stoi(s));
-        for (int n : sides)
-          if (n < 3 || n > 4096) throw std::invalid_argument("--sides: each count must be in 3..4096");
-      } else if (a == "--rays") {
-        ray_count = std::stoul(value());
-      } else if (a == "--repeat") {
-        repeats = std::max(1, std::stoi(value()));
-      } else {
-        throw std::invalid_argument("unknown option '" + a + "'");
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "prism-bench polygons: " << e.what() << "\n\n" << kUsage;
-      return 2;
+  const int status = parseBenchOptions(args, "polygons", kUsage, [&](const std::string& a, const OptionValue& value) {
+    if (a == "--device") {
+      device_name = value();
+    } else if (a == "--sides") {
+      sides.clear();
+      std::stringstream ss(value());
+      for (std::string s; std::getline(ss, s, ',');) sides.push_back(std::stoi(s));
+      for (int n : sides)
+        if (n < 3 || n > 4096) throw std::invalid_argument("--sides: each count must be in 3..4096");
+    } else if (a == "--rays") {
+      ray_count = std::stoul(value());
+    } else if (a == "--repeat") {
+      repeats = std::max(1, std::stoi(value()));
+    } else {
+      throw std::invalid_argument("unknown option '" + a + "'");
     }
-  }
+  });
+  if (status >= 0) return status;
   try {
     Context context(selectDevice(device_name), true);
     std::printf("device: %s\nrays: %zu straight down onto 144 polygons; median of %d runs, the tests taking turns\n\n",

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "bench_data.h"
+#include "bench_options.h"
 #include "bench_plugins.h"
 #include "device/context.h"
 #include "device/device_list.h"
@@ -104,39 +105,22 @@ int shadowsMain(const std::vector<std::string>& args) {
   std::string device_name, data_dir;
   int width = 320, height = 240, repeats = 3;
   bool large = true;
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) {
-        std::cerr << "prism-bench shadows: " << a << " needs a value\n\n" << kUsage;
-        std::exit(2);
-      }
-      return args[++i];
-    };
-    try {
-      if (a == "--help" || a == "-h") {
-        std::cout << kUsage;
-        return 0;
-      } else if (a == "--device") {
-        device_name = value();
-      } else if (a == "--size") {
-        const std::string v = value();
-        if (std::sscanf(v.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1)
-          throw std::invalid_argument("--size: expected WxH, got '" + v + "'");
-      } else if (a == "--repeat") {
-        repeats = std::max(1, std::stoi(value()));
-      } else if (a == "--data") {
-        data_dir = value();
-      } else if (a == "--no-large") {
-        large = false;
-      } else {
-        throw std::invalid_argument("unknown option '" + a + "'");
-      }
-    } catch (const std::exception& e) {
-      std::cerr << "prism-bench shadows: " << e.what() << "\n\n" << kUsage;
-      return 2;
+  const int status = parseBenchOptions(args, "shadows", kUsage, [&](const std::string& a, const OptionValue& value) {
+    if (a == "--device") {
+      device_name = value();
+    } else if (a == "--size") {
+      parseSize(a, value(), &width, &height);
+    } else if (a == "--repeat") {
+      repeats = std::max(1, std::stoi(value()));
+    } else if (a == "--data") {
+      data_dir = value();
+    } else if (a == "--no-large") {
+      large = false;
+    } else {
+      throw std::invalid_argument("unknown option '" + a + "'");
     }
-  }
+  });
+  if (status >= 0) return status;
   try {
     std::vector<Case> cases = {{"whitted", loadSceneFile(PRISM_SOURCE_DIR "/scenes/whitted.json")},
                                {"spheres 4", spheres(2)},     {"spheres 64", spheres(8)},
