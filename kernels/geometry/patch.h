@@ -139,14 +139,13 @@ inline void patch_part(const float* q, float u0, float u1, float v0, float v1, f
 
 /* Whether the part c can hold a crossing in (tmin, tmax): its control points'
  * box (convex hull property) holds the ray, within tol, and reaches that t. */
-inline bool patch_part_meets(const float* c, float tol, float tmin, float tmax, float* extent) {
+inline bool patch_part_meets(const float* c, float tol, float tmin, float tmax) {
   float3 lo = (float3)(PRISM_INF), hi = (float3)(-PRISM_INF);
   for (int k = 0; k < 16; ++k) {
     float3 p = (float3)(c[3 * k], c[3 * k + 1], c[3 * k + 2]);
     lo = fmin(lo, p);
     hi = fmax(hi, p);
   }
-  *extent = fmax(hi.x - lo.x, hi.y - lo.y);
   return lo.x <= tol && hi.x >= -tol && lo.y <= tol && hi.y >= -tol && hi.z > tmin && lo.z < tmax;
 }
 
@@ -229,8 +228,7 @@ inline bool patch_intersect(float3 o, float3 d, float tmin, float tmax, __global
     int cuts = (int)stack[5 * top + 4];
     if (cuts > 0) patch_part(q, u0, u1, v0, v1, c);
     const float* part = cuts > 0 ? c : q; /* the whole piece is q itself */
-    float extent;
-    if (!patch_part_meets(part, tol, tmin, best, &extent)) continue;
+    if (!patch_part_meets(part, tol, tmin, best)) continue;
     if (!steep && cuts < PATCH_MAX_CUTS && !patch_part_one_sign(part)) {
       /* Cut across the longer side (in the projection); both halves go on the stack. */
       float lu = fast_length((float2)(part[36] - part[0], part[37] - part[1])) + fast_length((float2)(part[45] - part[9], part[46] - part[10]));
