@@ -103,15 +103,16 @@ int patchMain(const std::vector<std::string>& args) {
     std::vector<std::unique_ptr<RayQueryEngine>> engines;
     std::vector<double> build_seconds;
     std::vector<std::size_t> prims;
+    Aabb box;  // of the analytic variant, the first: the rays frame it
     for (const Variant& v : variants) {
       std::vector<ObjectGpu> objects = flattenScene(v.scene, RenderOptions::fromScene(v.scene)).objects;
+      if (&v == &variants.front()) box = boundsOf(objects);
       prims.push_back(v.scene.objects[0].primitiveCount());
       const auto start = std::chrono::steady_clock::now();
       engines.push_back(std::make_unique<RayQueryEngine>(context, std::move(objects), AccelKind::Bvh));
       build_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
                               engines.back()->compileSeconds());
     }
-    const Aabb box = boundsOf(flattenScene(variants[0].scene, RenderOptions::fromScene(variants[0].scene)).objects);
     // Framed closer than cameraRays frames a box (its margin suits scenes of
     // many objects): the teapot fills about half of the image.
     Aabb framed = box;

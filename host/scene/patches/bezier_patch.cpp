@@ -21,23 +21,27 @@ void bernstein(double t, double b[4], double db[4]) {
 
 Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a + (b - a) * t; }
 
+// De Casteljau's step: the cubic c cut at t into its parts over [0, t] and
+// [t, 1] (either may be null). They share the cut point; each keeps its end
+// control point exactly.
+void casteljau(const Vec3 c[4], double t, Vec3 left[4], Vec3 right[4]) {
+  const Vec3 p01 = lerp(c[0], c[1], t), p12 = lerp(c[1], c[2], t), p23 = lerp(c[2], c[3], t);
+  const Vec3 p012 = lerp(p01, p12, t), p123 = lerp(p12, p23, t), mid = lerp(p012, p123, t);
+  if (left) left[0] = c[0], left[1] = p01, left[2] = p012, left[3] = mid;
+  if (right) right[0] = mid, right[1] = p123, right[2] = p23, right[3] = c[3];
+}
+
 // The control points of the cubic c restricted to [a, b] (0 <= a < b <= 1).
 void subCurve(const Vec3 c[4], double a, double b, Vec3 out[4]) {
   // Cut at b, keep [0, b]; then cut that at a / b and keep its second part.
   Vec3 l[4];
-  {
-    Vec3 p01 = lerp(c[0], c[1], b), p12 = lerp(c[1], c[2], b), p23 = lerp(c[2], c[3], b);
-    Vec3 p012 = lerp(p01, p12, b), p123 = lerp(p12, p23, b);
-    l[0] = c[0], l[1] = p01, l[2] = p012, l[3] = b == 1 ? c[3] : lerp(p012, p123, b);
-  }
+  casteljau(c, b, l, nullptr);
+  if (b == 1) l[3] = c[3];  // (the cut at 1 rounds; the end is the end)
   if (a == 0) {
     std::copy(l, l + 4, out);
     return;
   }
-  const double s = a / b;
-  Vec3 p01 = lerp(l[0], l[1], s), p12 = lerp(l[1], l[2], s), p23 = lerp(l[2], l[3], s);
-  Vec3 p012 = lerp(p01, p12, s), p123 = lerp(p12, p23, s);
-  out[0] = lerp(p012, p123, s), out[1] = p123, out[2] = p23, out[3] = l[3];
+  casteljau(l, a / b, nullptr, out);
 }
 
 double distance(const Vec3& a, const Vec3& b) { return length(a - b); }
@@ -71,10 +75,11 @@ Vec3 patchNormal(const BezierPatch& patch, double u, double v) {
 }
 
 Vec3 curvePoint(const Vec3 c[4], double t) {
-  Vec3 p01 = lerp(c[0], c[1], t), p12 = lerp(c[1], c[2], t), p23 = lerp(c[2], c[3], t);
   if (t == 0) return c[0];
   if (t == 1) return c[3];
-  return lerp(lerp(p01, p12, t), lerp(p12, p23, t), t);
+  Vec3 left[4];
+  casteljau(c, t, left, nullptr);
+  return left[3];
 }
 
 BezierPatch subPatch(const BezierPatch& patch, double u0, double u1, double v0, double v1) {
@@ -97,11 +102,9 @@ BezierPatch subPatch(const BezierPatch& patch, double u0, double u1, double v0, 
 
 void splitPatch(const BezierPatch& patch, bool along_u, BezierPatch& first, BezierPatch& second) {
   for (int k = 0; k < 4; ++k) {
-    Vec3 c[4];
+    Vec3 c[4], a[4], b[4];
     for (int m = 0; m < 4; ++m) c[m] = along_u ? patch.at(m, k) : patch.at(k, m);
-    Vec3 p01 = lerp(c[0], c[1], 0.5), p12 = lerp(c[1], c[2], 0.5), p23 = lerp(c[2], c[3], 0.5);
-    Vec3 p012 = lerp(p01, p12, 0.5), p123 = lerp(p12, p23, 0.5), mid = lerp(p012, p123, 0.5);
-    const Vec3 a[4] = {c[0], p01, p012, mid}, b[4] = {mid, p123, p23, c[3]};
+    casteljau(c, 0.5, a, b);
     for (int m = 0; m < 4; ++m) {
       (along_u ? first.at(m, k) : first.at(k, m)) = a[m];
       (along_u ? second.at(m, k) : second.at(k, m)) = b[m];

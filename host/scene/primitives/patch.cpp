@@ -204,21 +204,14 @@ bool rayMeetsBox(const Vec3& o, const Vec3& d, double tmin, double tmax, const V
   return true;
 }
 
-// Möller-Trumbore in double, edges included.
-std::optional<double> rayTriangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c,
-                                  double tmin, double tmax) {
-  const Vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
-  const double det = dot(e1, pv);
-  if (det == 0) return std::nullopt;
-  const Vec3 tv = o - a;
-  const double u = dot(tv, pv) / det;
-  if (u < 0 || u > 1) return std::nullopt;
-  const Vec3 qv = cross(tv, e1);
-  const double v = dot(d, qv) / det;
-  if (v < 0 || u + v > 1) return std::nullopt;
-  const double t = dot(e2, qv) / det;
-  if (t > tmin && t < tmax) return t;
-  return std::nullopt;
+// A corner triangle of a piece, met by the triangle kind's own reference
+// (edges included).
+std::optional<double> cornerTriangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c,
+                                     double tmin, double tmax) {
+  Object triangle;
+  triangle.type = ObjectType::Triangle;
+  triangle.vertices[0] = a, triangle.vertices[1] = b, triangle.vertices[2] = c;
+  return kTriangleKind.reference(triangle, o, d, tmin, tmax);
 }
 
 // Successive subdivision per ray, in double (the kernel solves by Newton in
@@ -232,8 +225,8 @@ std::optional<double> subdivideAlongRay(const BezierPatch& p, const Vec3& o, con
   const double size = length(hi - lo);
   if (!rayMeetsBox(o, d, tmin, tmax, lo, hi, 1e-9 * size + least * 1e-3)) return std::nullopt;
   if (size <= least || depth >= 64) {
-    std::optional<double> a = rayTriangle(o, d, p.at(0, 0), p.at(3, 0), p.at(3, 3), tmin, tmax);
-    std::optional<double> b = rayTriangle(o, d, p.at(0, 0), p.at(3, 3), p.at(0, 3), tmin, tmax);
+    std::optional<double> a = cornerTriangle(o, d, p.at(0, 0), p.at(3, 0), p.at(3, 3), tmin, tmax);
+    std::optional<double> b = cornerTriangle(o, d, p.at(0, 0), p.at(3, 3), p.at(0, 3), tmin, tmax);
     if (a && b) return std::min(*a, *b);
     return a ? a : b;
   }
