@@ -31,7 +31,7 @@ namespace {
 
 struct BenchScene {
   std::string name;
-  std::vector<ObjectGpu> objects;
+  SceneGeometry geometry;
   // Triangle soup for Embree (shared vertices kept for meshes); empty when the
   // scene has other primitives, which Embree's triangle geometry cannot take.
   std::vector<float> positions;
@@ -41,7 +41,7 @@ struct BenchScene {
 BenchScene fromMesh(const std::string& name, const TriangleMesh& mesh) {
   BenchScene s;
   s.name = name;
-  s.objects = trianglesFromMesh(mesh);
+  s.geometry = geometryFromMesh(mesh);
   s.positions = mesh.positions;
   s.indices = mesh.indices;
   return s;
@@ -55,11 +55,13 @@ BenchScene loadInput(const std::string& path) {
   Scene scene = loadSceneFile(path);
   BenchScene s;
   s.name = name;
-  s.objects = flattenScene(scene, RenderOptions::fromScene(scene)).objects;
+  s.geometry = flattenScene(scene, RenderOptions::fromScene(scene));
+  const std::vector<ObjectGpu> primitives(s.geometry.objects.begin(),
+                                          s.geometry.objects.begin() + static_cast<std::ptrdiff_t>(s.geometry.primitive_count));
   bool triangles_only = true;
-  for (const ObjectGpu& o : s.objects) triangles_only &= o.type == OBJECT_TRIANGLE && !o.has_transform;
+  for (const ObjectGpu& o : primitives) triangles_only &= o.type == OBJECT_TRIANGLE && !o.has_transform;
   if (triangles_only)
-    for (const ObjectGpu& o : s.objects)
+    for (const ObjectGpu& o : primitives)
       for (int k = 0; k < 3; ++k) {
         for (int a = 0; a < 3; ++a) s.positions.push_back(o.p[3 * k + a]);
         s.indices.push_back(static_cast<std::uint32_t>(s.indices.size()));
@@ -186,7 +188,7 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
   }
   std::vector<BenchRow> rows;
   auto runScene = [&](const BenchScene& scene) {
-    const Aabb box = boundsOf(scene.objects);
+    const Aabb box = boundsOf(scene.geometry.objects);
     const std::vector<QueryRay> primary = cameraRays(box, options.camera, options.camera);
     const std::vector<QueryRay> random = randomRays(box, options.random_rays, 1234);
     const std::vector<RayGpu> primary_gpu = toRayGpu(primary), random_gpu = toRayGpu(random);
@@ -203,6 +205,7 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       Contender c;
       c.row.structure = "embree";
       c.row.build_seconds = ref->buildSeconds();
+      c.row.bytes_per_triangle = double(ref->bytes()) / std::max<std::size_t>(1, scene.indices.size() / 3);
       c.rebuild = [&scene, threads] { return EmbreeReference(scene.positions, scene.indices, threads).buildSeconds(); };
       c.intersect = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s) {
         return ref->intersect(q, s);
@@ -216,14 +219,15 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
 #endif
     std::vector<std::unique_ptr<RayQueryEngine>> engines;
     for (AccelKind kind : options.structures) {
-      engines.push_back(std::make_unique<RayQueryEngine>(context, scene.objects, kind));
+      engines.push_back(std::make_unique<RayQueryEngine>(context, scene.geometry, kind));
       RayQueryEngine* engine = engines.back().get();
       const AccelStats& st = engine->accel().stats;
       Contender c;
       c.row.structure = accelName(kind);
       c.row.build_seconds = st.build_seconds;
-      c.rebuild = [&scene, kind] { return buildAccel(kind, scene.objects)->stats.build_seconds; };
-      c.row.bytes_per_triangle = scene.objects.empty() ? kNaN : double(st.bytes) / primitiveCount(scene.objects);
+      c.rebuild = [&scene, kind] { return buildAccel(kind, scene.geometry.objects)->stats.build_seconds; };
+      c.row.bytes_per_triangle =
+          scene.geometry.primitive_count == 0 ? kNaN : double(engine->deviceBytes()) / scene.geometry.primitive_count;
       c.row.nodes = static_cast<double>(st.node_count);
       c.row.leaves = static_cast<double>(st.leaf_count);
       c.row.prims_per_leaf = st.mean_prims_per_leaf;
@@ -284,7 +288,7 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     for (std::size_t i = 0; i < contenders.size(); ++i) {
       BenchRow& row = contenders[i].row;
       row.scene = scene.name;
-      row.triangles = primitiveCount(scene.objects);  // not the motion and data records after them
+      row.triangles = scene.geometry.primitive_count;
       row.primary_mrays = primary_mrays[i];
       row.shadow_mrays = shadow_mrays[i];
       row.random_mrays = random_mrays[i];

@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -56,7 +57,18 @@ struct EmbreeReference::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   int threads = 1;
+  std::atomic<long long> bytes{0};  // what the device holds now, by its memory monitor
 };
+
+namespace {
+
+// Embree reports each allocation (bytes > 0) and release (bytes < 0).
+bool countBytes(void* user, ssize_t bytes, bool /*post*/) {
+  static_cast<std::atomic<long long>*>(user)->fetch_add(bytes);
+  return true;
+}
+
+}  // namespace
 
 EmbreeReference::EmbreeReference(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices,
                                  int threads)
@@ -65,6 +77,7 @@ EmbreeReference::EmbreeReference(const std::vector<float>& positions, const std:
   std::string config = "threads=" + std::to_string(m_impl->threads);
   m_impl->device = rtcNewDevice(config.c_str());
   if (!m_impl->device) throw std::runtime_error("Embree: rtcNewDevice failed");
+  rtcSetDeviceMemoryMonitorFunction(m_impl->device, countBytes, &m_impl->bytes);
   m_impl->scene = rtcNewScene(m_impl->device);
   RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
   const std::size_t vertex_count = positions.size() / 3, triangle_count = indices.size() / 3;
@@ -80,6 +93,7 @@ EmbreeReference::EmbreeReference(const std::vector<float>& positions, const std:
   auto start = Clock::now();
   rtcCommitScene(m_impl->scene);
   m_build_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  m_bytes = static_cast<std::size_t>(std::max(0LL, m_impl->bytes.load()));
 }
 
 EmbreeReference::~EmbreeReference() {

@@ -21,6 +21,9 @@ class EmbreeReference {
   EmbreeReference& operator=(const EmbreeReference&) = delete;
 
   double buildSeconds() const { return m_build_seconds; }
+  // Bytes the Embree device held after the build (its memory monitor): the
+  // vertex and index buffers, the BVH and its triangle leaves.
+  std::size_t bytes() const { return m_bytes; }
   std::vector<HitGpu> intersect(const std::vector<QueryRay>& rays, double* seconds) const;
   std::vector<std::uint8_t> occluded(const std::vector<QueryRay>& rays, double* seconds) const;
 
@@ -28,6 +31,7 @@ class EmbreeReference {
   struct Impl;
   std::unique_ptr<Impl> m_impl;
   double m_build_seconds = 0;
+  std::size_t m_bytes = 0;
 };
 
 }  // namespace prism::bench

@@ -205,15 +205,11 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
     RenderOptions render_options = RenderOptions::fromScene(scene);
     render_options.width = options.width;
     render_options.height = options.height;
-    scene.objects.clear();  // only its camera is wanted here
-    GpuScene gpu;
-    gpu.objects = trianglesFromMesh(*mesh);
-    gpu.primitive_count = gpu.objects.size();
-    gpu.camera = flattenScene(scene, render_options).camera;
+    const GpuScene gpu = flattenScene(scene, render_options);  // the mesh's compact triangles and the camera
 
     FirstHitRow row;
     row.scene = std::filesystem::path(path).filename().string();
-    row.triangles = gpu.objects.size();
+    row.triangles = gpu.primitive_count;
 
     // The same samples both ways: every pixel centre.
     const size_t count = static_cast<size_t>(options.width) * options.height;
@@ -222,9 +218,9 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
       xy[2 * k] = static_cast<float>(k % options.width) + 0.5f;
       xy[2 * k + 1] = static_cast<float>(k / options.width) + 0.5f;
     }
-    Buffer xy_buffer(context, xy.size() * sizeof(float)), objects(context, gpu.objects.size() * sizeof(ObjectGpu));
+    Buffer xy_buffer(context, xy.size() * sizeof(float));
     xy_buffer.writeVector(xy);
-    objects.writeVector(gpu.objects);
+    GeometryBuffers objects(context, gpu);
     Buffer hit_buffer(context, count * sizeof(HitGpu));
 
     // Z-buffer: the host's set-up, then the pass (one untimed run first: PoCL
@@ -238,7 +234,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
     });
     pass.run(objects, xy_buffer, count, hit_buffer, 1);  // pixel centres, in pixel order
     context.finish();
-    row.pairs_per_prim = static_cast<double>(pass.stats().pairs) / std::max<size_t>(1, gpu.objects.size());
+    row.pairs_per_prim = static_cast<double>(pass.stats().pairs) / std::max<size_t>(1, gpu.primitive_count);
     row.zbuffer_seconds = medianSeconds(options.repeats, [&] {
       auto start = Clock::now();
       pass.run(objects, xy_buffer, count, hit_buffer, 1);  // pixel centres, in pixel order
@@ -272,7 +268,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
         .arg(rays)
         .run(count);
     std::vector<RayGpu> primary = rays.readVector<RayGpu>(count);
-    RayQueryEngine engine(context, gpu.objects, AccelKind::Bvh);
+    RayQueryEngine engine(context, SceneGeometry(gpu), AccelKind::Bvh);
     row.build_seconds = engine.accel().stats.build_seconds;
     std::vector<HitGpu> thits = engine.intersect(primary);  // warm-up at this size
     row.trace_seconds = medianSeconds(options.repeats, [&] {

@@ -105,11 +105,11 @@ int patchMain(const std::vector<std::string>& args) {
     std::vector<std::size_t> prims;
     Aabb box;  // of the analytic variant, the first: the rays frame it
     for (const Variant& v : variants) {
-      std::vector<ObjectGpu> objects = flattenScene(v.scene, RenderOptions::fromScene(v.scene)).objects;
-      if (&v == &variants.front()) box = boundsOf(objects);
+      SceneGeometry geometry = flattenScene(v.scene, RenderOptions::fromScene(v.scene));
+      if (&v == &variants.front()) box = boundsOf(geometry.objects);
       prims.push_back(v.scene.objects[0].primitiveCount());
       const auto start = std::chrono::steady_clock::now();
-      engines.push_back(std::make_unique<RayQueryEngine>(context, std::move(objects), AccelKind::Bvh));
+      engines.push_back(std::make_unique<RayQueryEngine>(context, std::move(geometry), AccelKind::Bvh));
       build_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
                               engines.back()->compileSeconds());
     }

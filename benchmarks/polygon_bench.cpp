@@ -102,7 +102,7 @@ int polygonMain(const std::vector<std::string>& args) {
         for (InsideTest t : tests) {
           RenderOptions options = RenderOptions::fromScene(scene);
           options.inside_test = t;
-          engines.push_back(std::make_unique<RayQueryEngine>(context, flattenScene(scene, options).objects, AccelKind::Bvh));
+          engines.push_back(std::make_unique<RayQueryEngine>(context, SceneGeometry(flattenScene(scene, options)), AccelKind::Bvh));
           engines.back()->intersect(rays);  // compiles and warms up, untimed
         }
         std::vector<std::vector<double>> times(tests.size());

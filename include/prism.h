@@ -514,7 +514,8 @@ PRISM_API void prismReleaseResult(PrismResult result); /* NULL is a no-op */
 
 /* prism as a ray-query engine for other programs: closest or any hit of caller
  * rays against a scene's primitives, numbered as the primid AOV numbers them
- * (objects in order; a mesh counts its triangles in file order). The spatial index
+ * (the analytic objects in order, then the meshes' triangles, mesh by mesh, in
+ * file order; docs/scene-format.md). The spatial index
  * is built on first use and kept in the context for the same scene and structure
  * until the scene changes. */
 typedef struct PrismRay {

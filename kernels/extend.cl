@@ -2,7 +2,8 @@
 #include "accel/accel.h"
 #include "shading/ray_io.h"
 
-__kernel void extend(__global const RayGpu* rays, int count, ACCEL_PARAMS, __global HitGpu* hits) {
+__kernel void extend(__global const RayGpu* rays, int count, ACCEL_KERNEL_PARAMS, __global HitGpu* hits) {
+  ACCEL_GEOMETRY;
   int k = get_global_id(0);
   if (k >= count) return;
   RayGpu r = rays[k];

@@ -13,9 +13,9 @@
  *     pixels inside the bounds, and an atomic minimum of (t, primitive) into the
  *     sample's depth + id entry;
  *   firsthit_resolve: per sample, the winner's t, u, v by the tracer's own
- *     object_intersect.
+ *     prim_intersect.
  *
- * The ray tests are the tracer's (object_intersect; for a plain triangle its
+ * The ray tests are the tracer's (prim_intersect; for a plain triangle its
  * triangle_intersect split at the origin, which gives the same bits), so a
  * sample's depth and id are what tracing its ray gives; equal depths go to the
  * lower primitive index, as in a brute-force loop over the scene. The minimum
@@ -31,7 +31,7 @@
 #pragma OPENCL EXTENSION cl_khr_int64_extended_atomics : enable
 #endif
 
-#include "geometry/object.h"
+#include "geometry/primitive.h"
 #include "sampling/camera_ray.h"
 #include "sampling/film_bounds.h"
 
@@ -124,11 +124,21 @@ inline int firsthit_pixel_slot(int width, long first, int spp, __global const in
   return cell_start[cell] + (int)(g - max(p * spp, first));
 }
 
-/* A plain triangle (no transform) is tested from its vertices; any other kind
- * through object_intersect, bounded by the host's world box of it (other_boxes,
+/* A plain triangle (no transform: a static mesh's, or a triangle record) is
+ * tested from its vertices; any other kind through prim_intersect, bounded by the host's world box of it (other_boxes,
  * 6 floats, infinite where it is unbounded). */
-inline bool firsthit_plain_triangle(__global const ObjectGpu* ob) {
-  return ob->type == OBJECT_TRIANGLE && ob->has_transform == 0;
+inline bool firsthit_plain_triangle(const Geometry* g, int id, float3* v0, float3* v1, float3* v2) {
+  if (prim_is_compact(g, id)) {
+    if (prim_mesh(g, id)->has_transform) return false;
+    prim_triangle_vertices(g, prim_triangle_indices(g, id), v0, v1, v2);
+    return true;
+  }
+  __global const ObjectGpu* ob = g->objects + id;
+  if (ob->type != OBJECT_TRIANGLE || ob->has_transform) return false;
+  *v0 = load3g(ob->p);
+  *v1 = load3g(ob->p + 3);
+  *v2 = load3g(ob->p + 6);
+  return true;
 }
 
 inline int firsthit_prim(int item, int prims, __global const int* other_prims) {
@@ -142,18 +152,20 @@ inline int firsthit_blocks(int4 r) {
 
 /* block_count[item]: the blocks its cells span (0 when culled); the host turns
  * them into pair_start by an exclusive scan. */
-__kernel void firsthit_bound(__global const CameraGpu* camera, __global const ObjectGpu* objects, int prims,
+__kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS,
                              __global const int* other_prims, __global const float* other_boxes, int others,
                              __global int4* cells, __global int* block_count) {
+  const Geometry g = GEOMETRY_INIT;
+  const int prims = g.prim_count;
   int item = get_global_id(0);
   if (item >= prims + others) return;
   FilmProjector c = film_projector(camera);
   FilmHull hull = film_hull_empty();
   int4 r = (int4)(0, 0, -1, -1);
   if (item < prims) {
-    __global const ObjectGpu* ob = &objects[item];
-    if (firsthit_plain_triangle(ob))
-      for (int i = 0; i < 3; ++i) film_hull_add(&c, load3g(ob->p + 3 * i), &hull);
+    float3 v[3];
+    if (firsthit_plain_triangle(&g, item, &v[0], &v[1], &v[2]))
+      for (int i = 0; i < 3; ++i) film_hull_add(&c, v[i], &hull);
   } else {
     __global const float* b = other_boxes + 6 * (item - prims);
     for (int i = 0; i < 8; ++i)
@@ -187,10 +199,12 @@ inline void firsthit_keep(__global uint* entries, int slot, float t, int prim, i
 #endif
 }
 
-__kernel void firsthit_raster(__global const CameraGpu* camera, __global const ObjectGpu* objects, int prims,
+__kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS,
                               __global const int* other_prims, __global const int4* cells, int pair_count,
                               __global const int2* pairs, __global const int* cell_start,
                               __global const float4* sorted, int pass, __global uint* entries) {
+  const Geometry g = GEOMETRY_INIT;
+  const int prims = g.prim_count;
   int k = get_global_id(0);
   if (k >= pair_count) return;
   int2 pair = pairs[k];
@@ -204,12 +218,12 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, __global const O
   int width = camera->width;
   float3 o = load3g(camera->origin);
   float time = camera->shutter_open;
-  __global const ObjectGpu* ob = &objects[prim];
   /* Two loops, not one with a branch inside: the plain triangle's tests four
    * samples at once, triangle_intersect_from lane by lane (the same operations
    * in the same order, so the same bits; e2.qv is the same in every lane). */
-  if (pair.x < prims) {
-    TriangleFromOrigin tri = triangle_from_origin(o, load3g(ob->p), load3g(ob->p + 3), load3g(ob->p + 6));
+  float3 v0, v1, v2;
+  if (pair.x < prims && firsthit_plain_triangle(&g, prim, &v0, &v1, &v2)) { /* (firsthit_bound culled the rest) */
+    TriangleFromOrigin tri = triangle_from_origin(o, v0, v1, v2);
     const float e2_qv = tri_dot(tri.e2, tri.qv);
     for (int y = y0; y <= y1; ++y) {
       int end = cell_start[firsthit_cell(x1, y, width) + 1];
@@ -242,7 +256,7 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, __global const O
       for (int n = cell_start[firsthit_cell(x0, y, width)]; n < end; ++n) {
         float4 s = sorted[n];
         float t, u, v;
-        if (object_intersect(ob, o, (float3)(s.x, s.y, s.z), time, 0.0f, PRISM_INF, &t, &u, &v))
+        if (prim_intersect(&g, prim, o, (float3)(s.x, s.y, s.z), time, 0.0f, PRISM_INF, &t, &u, &v))
           firsthit_keep(entries, n, t, prim, pass);
       }
     }
@@ -252,10 +266,11 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, __global const O
 /* first: the chunk's first sample within the batch; spp > 0: the batch (whose
  * first sample of the image is batch_first) came in pixel order, else slot_of
  * has the slots. */
-__kernel void firsthit_resolve(__global const CameraGpu* camera, __global const ObjectGpu* objects, int count,
+__kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
                                int spp, long batch_first, __global const int* cell_start,
                                __global const int* slot_of, __global const float4* sorted,
                                __global const uint* entries, int first, __global HitGpu* hits) {
+  const Geometry g = GEOMETRY_INIT;
   int k = get_global_id(0);
   if (k >= count) return;
   int slot = spp > 0 ? firsthit_pixel_slot(camera->width, batch_first, spp, cell_start, batch_first + first + k)
@@ -272,7 +287,7 @@ __kernel void firsthit_resolve(__global const CameraGpu* camera, __global const 
   if (prim >= 0) {
     float4 s = sorted[slot];
     float t, u, v;
-    if (object_intersect(&objects[prim], load3g(camera->origin), (float3)(s.x, s.y, s.z), camera->shutter_open, 0.0f,
+    if (prim_intersect(&g, prim, load3g(camera->origin), (float3)(s.x, s.y, s.z), camera->shutter_open, 0.0f,
                          PRISM_INF, &t, &u, &v)) {
       hit.t = t;
       hit.prim = prim;

@@ -4,8 +4,9 @@
 #include "shading/ray_io.h"
 #include "shared/contribution_gpu.h"
 
-__kernel void occlude(__global const RayGpu* rays, int count, ACCEL_PARAMS, __global const MaterialGpu* materials,
-                      __global ContributionGpu* out) {
+__kernel void occlude(__global const RayGpu* rays, int count, ACCEL_KERNEL_PARAMS,
+                      __global const MaterialGpu* materials, __global ContributionGpu* out) {
+  ACCEL_GEOMETRY;
   int k = get_global_id(0);
   if (k >= count) return;
   RayGpu r = rays[k];

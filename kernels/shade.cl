@@ -20,7 +20,6 @@
  * chosen by the sampler) also write that pixel's AOVs. The program is built
  * with the acceleration structure's options (kernels/accel/accel.h). */
 #include "accel/accel.h"
-#include "geometry/object.h"
 #include "sampling/dimensions.h"
 #include "shading/light.h"
 #include "shading/light_buffer.h"
@@ -74,7 +73,7 @@ inline float2 lobe_sample(uint seed, int strata, RayGpu ray, int lobe) {
 #endif
 }
 
-__kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count, ACCEL_PARAMS,
+__kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, int count, ACCEL_KERNEL_PARAMS,
                     __global const MaterialGpu* materials, __global const float4* texels,
                     __global const LightGpu* lights, int light_count, LIGHT_BUFFER_PARAMS, float4 ambient,
                     float4 background, int max_depth, float min_weight, uint seed, int strata,
@@ -82,6 +81,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
                     __global SurfaceGpu* surfaces,
                     __global float* aov_depth, __global float* aov_normal, __global int* aov_primid,
                     __global float* aov_albedo) {
+  ACCEL_GEOMETRY;
   int k = get_global_id(0);
   if (k >= count) return;
   RayGpu ray = rays[k];
@@ -124,11 +124,11 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
     return;
   }
 
-  __global const ObjectGpu* object = &objects[hit.prim];
-  __global const MaterialGpu* m = &materials[object->material];
+  const int material = prim_material(geom, hit.prim);
+  __global const MaterialGpu* m = &materials[material];
   float3 n;
   float2 uv = (float2)(0.0f, 0.0f);
-  object_surface(object, o, d, ray.time, hit, m->texture != TEXTURE_NONE, &n, &uv);
+  prim_surface(geom, hit.prim, ray.time, hit, m->texture != TEXTURE_NONE, o, d, &n, &uv);
   float3 p = o + hit.t * d;
   float3 i_dir = normalize(d);
   bool inside = dot(n, i_dir) > 0.0f;
@@ -164,7 +164,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   put4(s->v, v, 0.0f);
   put4(s->kd, kd, 0.0f);
   put4(s->weight, weight, 0.0f);
-  s->material = object->material;
+  s->material = material;
   s->pixel = ray.pixel;
   s->sample = ray.sample;
   s->strata_id = ray.strata_id;

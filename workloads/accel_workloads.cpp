@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <map>
+#include <memory>
 #include <random>
+#include <string>
 #include <utility>
+
+#include "render/gpu_scene.h"
 
 namespace prism {
 namespace {
@@ -31,6 +36,18 @@ std::vector<ObjectGpu> trianglesFromMesh(const TriangleMesh& mesh, int material)
     g.world_to_object[0] = g.world_to_object[5] = g.world_to_object[10] = 1;
   }
   return out;
+}
+
+SceneGeometry geometryFromMesh(const TriangleMesh& mesh) {
+  Scene scene;
+  scene.materials.push_back(Material{});
+  Object ob;
+  ob.type = ObjectType::Mesh;
+  ob.mesh = std::make_shared<const TriangleMesh>(mesh);
+  ob.material = 0;
+  ob.material_override = true;
+  scene.objects.push_back(ob);
+  return flattenScene(scene, RenderOptions::fromScene(scene));
 }
 
 TriangleMesh icosphere(int subdivisions, float cx, float cy, float cz, float radius) {
@@ -123,7 +140,8 @@ Aabb boundsOf(const std::vector<ObjectGpu>& objects) {
   Aabb box;
   // The primitives only: the motion and data records after them are not
   // objects (a data record's floats may read as any type).
-  for (std::size_t i = 0; i < primitiveCount(objects); ++i) {
+  const std::size_t count = primitiveCount(objects);  // (once: it scans the array)
+  for (std::size_t i = 0; i < count; ++i) {
     Aabb b;
     if (objectBounds(objects[i], &b)) box.extend(b);
   }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "accel/prim_ref.h"
+#include "accel/scene_geometry.h"
 #include "kernels/shared/hit_gpu.h"
 #include "kernels/shared/object_gpu.h"
 #include "render/ray_queries.h"
@@ -21,6 +22,9 @@ namespace prism {
 
 // One TRIANGLE object per mesh triangle, in file order, untransformed.
 std::vector<ObjectGpu> trianglesFromMesh(const TriangleMesh& mesh, int material = 0);
+// The mesh untransformed as a scene flattens it: compact triangles
+// (accel/scene_geometry.h), numbered in file order, material 0.
+SceneGeometry geometryFromMesh(const TriangleMesh& mesh);
 
 // Loop-free icosphere: the icosahedron's faces split `subdivisions` times,
 // 20 * 4^subdivisions triangles, vertices pushed onto the sphere.

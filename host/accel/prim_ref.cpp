@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "kernels/shared/mesh_gpu.h"
 #include "kernels/shared/motion_gpu.h"
 #include "scene/motion.h"
 #include "scene/primitives/primitive_kind.h"
@@ -291,7 +292,9 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
 
 std::size_t primitiveCount(const std::vector<ObjectGpu>& objects) {
   std::size_t n = 0;
-  while (n < objects.size() && objects[n].type != OBJECT_MOTION && objects[n].type != OBJECT_DATA) ++n;
+  while (n < objects.size() && objects[n].type != OBJECT_MOTION && objects[n].type != OBJECT_DATA &&
+         objects[n].type != OBJECT_MESH)
+    ++n;
   return n;
 }
 

@@ -37,8 +37,8 @@ struct PrimitiveSet {
 
 PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects);
 
-// The primitives of an object array: the entries before the motion and data
-// records that close it (kernels/shared/motion_gpu.h, object_gpu.h), if any.
+// The primitives of an object array: the entries before the mesh headers,
+// motion and data records that close it (kernels/shared/motion_gpu.h, object_gpu.h), if any.
 std::size_t primitiveCount(const std::vector<ObjectGpu>& objects);
 // Whether some primitive moves (the kernels then need kMotionKernelOption).
 bool anyMoving(const std::vector<ObjectGpu>& objects);

@@ -20,8 +20,9 @@ RayQueryEngine& engineFor(PrismContext context, PrismScene scene, int accel) {
   if (!context->queries || context->queries_revision != scene->revision || context->queries_accel != kind) {
     context->queries.reset();
     GpuScene gpu = flattenScene(scene->scene, RenderOptions::fromScene(scene->scene));
-    context->queries = std::make_unique<RayQueryEngine>(*context->context, std::move(gpu.objects), kind,
-                                                        std::move(gpu.materials));
+    std::vector<MaterialGpu> materials = std::move(gpu.materials);
+    context->queries = std::make_unique<RayQueryEngine>(
+        *context->context, std::move(static_cast<SceneGeometry&>(gpu)), kind, std::move(materials));
     context->queries_revision = scene->revision;
     context->queries_accel = kind;
   }

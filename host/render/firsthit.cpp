@@ -84,7 +84,7 @@ void FirstHitPass::prepare(const GpuScene& scene) {
   m_stats.wide_atomics = m_wide;
 }
 
-void FirstHitPass::rasterize(const Buffer& objects, const Buffer& xy, size_t first, size_t count, int pixel_spp) {
+void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, size_t first, size_t count, int pixel_spp) {
   if (!m_raster) throw std::logic_error("FirstHitPass::rasterize before prepare");
   if (count == 0) return;
   if (first + count > static_cast<size_t>(std::numeric_limits<std::int32_t>::max()))
@@ -139,10 +139,9 @@ void FirstHitPass::rasterize(const Buffer& objects, const Buffer& xy, size_t fir
 
   // The primitives' film bounds and their (primitive, block) pairs.
   const size_t items = m_prims + m_others;
-  m_context.launch(m_bound)
-      .arg(m_camera)
-      .arg(objects)
-      .arg(static_cast<cl_int>(m_prims))
+  KernelLaunch bound = m_context.launch(m_bound);
+  bound.arg(m_camera);
+  geometry.bind(bound)
       .arg(m_other_prims)
       .arg(m_other_boxes)
       .arg(static_cast<cl_int>(m_others))
@@ -161,11 +160,10 @@ void FirstHitPass::rasterize(const Buffer& objects, const Buffer& xy, size_t fir
   if (total == 0) return;
   m_pairs.reserve(m_context, static_cast<size_t>(total) * 2 * sizeof(std::int32_t));
   m_context.launch(m_emit).arg(static_cast<cl_int>(items)).arg(m_cells).arg(m_pair_start).arg(m_pairs).run(items);
-  for (int pass = 0; pass < (m_wide ? 1 : 2); ++pass)
-    m_context.launch(m_raster)
-        .arg(m_camera)
-        .arg(objects)
-        .arg(static_cast<cl_int>(m_prims))
+  for (int pass = 0; pass < (m_wide ? 1 : 2); ++pass) {
+    KernelLaunch raster = m_context.launch(m_raster);
+    raster.arg(m_camera);
+    geometry.bind(raster)
         .arg(m_other_prims)
         .arg(m_cells)
         .arg(static_cast<cl_int>(total))
@@ -175,14 +173,15 @@ void FirstHitPass::rasterize(const Buffer& objects, const Buffer& xy, size_t fir
         .arg(static_cast<cl_int>(pass))
         .arg(m_entries)
         .run(static_cast<size_t>(total));
+  }
 }
 
-void FirstHitPass::resolve(const Buffer& objects, size_t first, size_t count, Buffer& hits) {
+void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t count, Buffer& hits) {
   if (count == 0) return;
   if (first + count > m_batch) throw std::logic_error("FirstHitPass::resolve outside the rasterised batch");
-  m_context.launch(m_resolve)
-      .arg(m_camera)
-      .arg(objects)
+  KernelLaunch resolve = m_context.launch(m_resolve);
+  resolve.arg(m_camera);
+  geometry.bind(resolve)
       .arg(static_cast<cl_int>(count))
       .arg(static_cast<cl_int>(m_pixel_spp))
       .arg(static_cast<cl_long>(m_batch_first))
@@ -201,9 +200,9 @@ size_t FirstHitPass::cellCount() const {
          kBlock * kBlock;
 }
 
-void FirstHitPass::run(const Buffer& objects, const Buffer& xy, size_t count, Buffer& hits, int pixel_spp) {
-  rasterize(objects, xy, 0, count, pixel_spp);
-  resolve(objects, 0, count, hits);
+void FirstHitPass::run(const GeometryBuffers& geometry, const Buffer& xy, size_t count, Buffer& hits, int pixel_spp) {
+  rasterize(geometry, xy, 0, count, pixel_spp);
+  resolve(geometry, 0, count, hits);
 }
 
 size_t FirstHitPass::deviceBytes() const {
@@ -231,12 +230,11 @@ std::vector<HitGpu> firstHits(Context& context, const GpuScene& scene, const std
   if (count == 0) return {};
   FirstHitPass pass(context, atomics);
   pass.prepare(scene);
-  Buffer objects(context, std::max<size_t>(1, scene.objects.size()) * sizeof(ObjectGpu));
-  objects.writeVector(scene.objects);
+  GeometryBuffers geometry(context, scene);
   Buffer xy(context, sample_xy.size() * sizeof(float));
   xy.writeVector(sample_xy);
   Buffer hits(context, count * sizeof(HitGpu));
-  pass.run(objects, xy, count, hits, pixel_spp);
+  pass.run(geometry, xy, count, hits, pixel_spp);
   return hits.readVector<HitGpu>(count);
 }
 

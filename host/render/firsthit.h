@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "accel/accel_buffers.h"
 #include "device/context.h"
 #include "kernels/shared/hit_gpu.h"
 #include "render/device_scan.h"
@@ -37,19 +38,19 @@ class FirstHitPass {
  public:
   explicit FirstHitPass(Context& context, ZBufferAtomics atomics = ZBufferAtomics::Auto);
 
-  // The scene's camera and what the kernels need besides its ObjectGpu array:
+  // The scene's camera and what the kernels need besides its geometry:
   // the primitives that are not plain triangles, with their world bounds.
   void prepare(const GpuScene& scene);
   // The depth + id entries of the `count` positions xy[2k], xy[2k+1] for k in
-  // [first, first + count) (film coordinates in [0, W] x [0, H]); `objects` holds
-  // the scene's ObjectGpu array. Replaces the last batch. pixel_spp > 0 says the
+  // [first, first + count) (film coordinates in [0, W] x [0, H]) of the
+  // scene whose geometry is uploaded in `geometry`. Replaces the last batch. pixel_spp > 0 says the
   // positions are in pixel order, pixel_spp to a pixel (position k in pixel
   // k / pixel_spp, row by row), which spares sorting them; 0: any order.
-  void rasterize(const Buffer& objects, const Buffer& xy, std::size_t first, std::size_t count, int pixel_spp = 0);
+  void rasterize(const GeometryBuffers& geometry, const Buffer& xy, std::size_t first, std::size_t count, int pixel_spp = 0);
   // hits[k] for positions first + k, k < count, of the last batch.
-  void resolve(const Buffer& objects, std::size_t first, std::size_t count, Buffer& hits);
+  void resolve(const GeometryBuffers& geometry, std::size_t first, std::size_t count, Buffer& hits);
   // rasterize, then resolve the whole batch.
-  void run(const Buffer& objects, const Buffer& xy, std::size_t count, Buffer& hits, int pixel_spp = 0);
+  void run(const GeometryBuffers& geometry, const Buffer& xy, std::size_t count, Buffer& hits, int pixel_spp = 0);
 
   const FirstHitStats& stats() const { return m_stats; }
   // Device memory it holds now.

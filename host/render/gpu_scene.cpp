@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "kernels/shared/mesh_gpu.h"
 #include "kernels/shared/motion_gpu.h"
 #include "scene/mesh_objects.h"
 #include "scene/motion.h"
@@ -50,12 +51,28 @@ ObjectGpu flattenObject(const Object& ob, std::size_t part, const FlattenSetting
 
 Vec3 vertexAt(const std::vector<float>& xyz, std::uint32_t i) { return {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]}; }
 
-// One TRIANGLE record per mesh triangle, in file order, in world space (in object
-// space when the mesh moves: the kernels transform rays at their time instead);
-// with polygon faces, one POLYGON record (its vertices into `sides`) for each
-// of them instead of its triangles.
-void appendMesh(const Object& ob, const FlattenSettings& settings, std::vector<ObjectGpu>& out,
-                std::vector<std::pair<std::size_t, std::vector<float>>>& sides, bool moving) {
+// The meshes' compact triangles (kernels/shared/mesh_gpu.h), gathered while
+// the scene is flattened and placed after the analytic primitives at the end.
+struct MeshBlock {
+  std::vector<ObjectGpu> records;  // the triangles' host records (the builders' input)
+  std::vector<MeshGpu> headers;    // first_triangle counts from the block's start until placed
+  std::vector<std::uint32_t> triangles;
+  std::vector<float> positions;  // xyz per vertex
+  std::vector<float> extras;     // normals, texcoords, materials; offsets count from here until placed
+};
+
+float intBits(std::int32_t i) {
+  float f;
+  std::memcpy(&f, &i, sizeof f);
+  return f;
+}
+
+// A mesh object's primitives: its triangles into `block`, in file order, in
+// world space (object space when the mesh moves: the kernels transform rays at
+// their time instead); with polygon faces, one POLYGON record (its vertices
+// into `sides`) in `analytic` for each of them instead of its triangles.
+void appendMesh(const Object& ob, const FlattenSettings& settings, std::vector<ObjectGpu>& analytic,
+                std::vector<std::pair<std::size_t, std::vector<float>>>& sides, MeshBlock& block, bool moving) {
   const TriangleMesh& mesh = *ob.mesh;
   const bool identity = ob.transform.isIdentity() || moving;
   std::vector<Vec3> world(mesh.vertexCount());
@@ -63,62 +80,87 @@ void appendMesh(const Object& ob, const FlattenSettings& settings, std::vector<O
     Vec3 p = vertexAt(mesh.positions, static_cast<std::uint32_t>(v));
     world[v] = identity ? p : ob.transform.applyPoint(p);
   }
-  const bool smooth = ob.smooth && mesh.normals.size() == mesh.positions.size();
-  std::vector<Vec3> world_normals;
-  if (smooth) {
+  auto material = [&](std::size_t t) {
+    const int file_material = mesh.triangle_materials.empty() ? -1 : mesh.triangle_materials[t];
+    return ob.material_override || file_material < 0 ? ob.material : ob.mesh_material_offset + file_material;
+  };
+  std::vector<std::size_t> kept;  // the triangles that stay triangles
+  if (ob.polygon_faces.empty()) {
+    kept.resize(mesh.triangleCount());
+    for (std::size_t t = 0; t < kept.size(); ++t) kept[t] = t;
+  } else {
+    // Faces kept as polygons (flat: vertex normals are for triangles), the rest
+    // as their fan of triangles.
+    std::size_t t = 0;
+    for (std::size_t f = 0; f < ob.polygon_faces.size(); ++f) {
+      const std::uint32_t corners = mesh.face_corners[f];
+      if (ob.polygon_faces[f]) {
+        std::vector<Vec3> verts;
+        for (std::uint32_t v : faceVertexIndices(mesh, t, corners)) verts.push_back(world[v]);
+        ObjectGpu g{};
+        std::vector<float> side;
+        flattenPolygon(verts, static_cast<InsideTest>(settings.inside_test), g, side);
+        g.material = material(t);
+        sides.emplace_back(analytic.size(), std::move(side));
+        analytic.push_back(g);
+      } else {
+        for (std::uint32_t k = 0; k + 2 < corners; ++k) kept.push_back(t + k);
+      }
+      t += corners - 2;
+    }
+  }
+  if (kept.empty()) return;
+
+  constexpr std::size_t kMaxIndex = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
+  const std::size_t first_vertex = block.positions.size() / 3;
+  if (first_vertex + world.size() > kMaxIndex / 3 || block.extras.size() + 6 * world.size() + kept.size() > kMaxIndex)
+    throw std::invalid_argument("scene too large: the meshes hold more than 2^31 / 3 vertices together");
+  MeshGpu header{};
+  header.type = OBJECT_MESH;
+  header.first_triangle = static_cast<int>(block.records.size());
+  header.first_vertex = static_cast<int>(first_vertex);
+  header.normal_offset = header.texcoord_offset = header.material_offset = -1;
+  for (const Vec3& p : world) block.positions.insert(block.positions.end(), {float(p.x), float(p.y), float(p.z)});
+
+  if (ob.smooth && mesh.normals.size() == mesh.positions.size()) {
     // Normals map by the inverse transpose of the object-to-world transform.
     Transform inv = identity ? Transform::identity() : ob.transform.inverse();
-    world_normals.resize(world.size());
+    header.flags |= OBJECT_FLAG_VERTEX_NORMALS;
+    header.normal_offset = static_cast<int>(block.extras.size());
     for (std::size_t v = 0; v < world.size(); ++v) {
       Vec3 n = vertexAt(mesh.normals, static_cast<std::uint32_t>(v));
       Vec3 w{inv.m[0][0] * n.x + inv.m[1][0] * n.y + inv.m[2][0] * n.z,
              inv.m[0][1] * n.x + inv.m[1][1] * n.y + inv.m[2][1] * n.z,
              inv.m[0][2] * n.x + inv.m[1][2] * n.y + inv.m[2][2] * n.z};
       double len = length(w);
-      world_normals[v] = len > 0 ? w / len : w;
+      if (len > 0) w = w / len;
+      block.extras.insert(block.extras.end(), {float(w.x), float(w.y), float(w.z)});
     }
   }
-  auto material = [&](std::size_t t) {
-    const int file_material = mesh.triangle_materials.empty() ? -1 : mesh.triangle_materials[t];
-    return ob.material_override || file_material < 0 ? ob.material : ob.mesh_material_offset + file_material;
-  };
-  const bool textured = mesh.texcoords.size() == 2 * mesh.vertexCount();
-  auto appendTriangle = [&](std::size_t t) {
+  if (mesh.texcoords.size() == 2 * mesh.vertexCount()) {
+    header.flags |= OBJECT_FLAG_TEXCOORDS;
+    header.texcoord_offset = static_cast<int>(block.extras.size());
+    block.extras.insert(block.extras.end(), mesh.texcoords.begin(), mesh.texcoords.end());
+  }
+  header.material = material(kept.front());
+  for (std::size_t t : kept)
+    if (material(t) != header.material) header.material = -1;
+  if (header.material < 0) {
+    header.material_offset = static_cast<int>(block.extras.size());
+    for (std::size_t t : kept) block.extras.push_back(intBits(material(t)));
+  }
+  block.headers.push_back(header);
+
+  for (std::size_t t : kept) {
     ObjectGpu g{};
     g.type = OBJECT_TRIANGLE;
     g.material = material(t);
-    float* uv[6] = {&g.p[9], &g.p[10], &g.p[11], &g.world_to_object[9], &g.world_to_object[10], &g.world_to_object[11]};
     for (int k = 0; k < 3; ++k) {
       std::uint32_t v = mesh.indices[3 * t + k];
       put3(g.p + 3 * k, world[v]);
-      if (smooth) put3(g.world_to_object + 3 * k, world_normals[v]);
-      if (textured) *uv[2 * k] = mesh.texcoords[2 * v], *uv[2 * k + 1] = mesh.texcoords[2 * v + 1];
+      block.triangles.push_back(static_cast<std::uint32_t>(first_vertex + v));
     }
-    g.flags = (smooth ? OBJECT_FLAG_VERTEX_NORMALS : 0) | (textured ? OBJECT_FLAG_TEXCOORDS : 0);
-    out.push_back(g);
-  };
-  if (ob.polygon_faces.empty()) {
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) appendTriangle(t);
-    return;
-  }
-  // Faces kept as polygons (flat: vertex normals are for triangles), the rest
-  // as their fan of triangles, in file order.
-  std::size_t t = 0;
-  for (std::size_t f = 0; f < ob.polygon_faces.size(); ++f) {
-    const std::uint32_t corners = mesh.face_corners[f];
-    if (ob.polygon_faces[f]) {
-      std::vector<Vec3> verts;
-      for (std::uint32_t v : faceVertexIndices(mesh, t, corners)) verts.push_back(world[v]);
-      ObjectGpu g{};
-      std::vector<float> side;
-      flattenPolygon(verts, static_cast<InsideTest>(settings.inside_test), g, side);
-      g.material = material(t);
-      sides.emplace_back(out.size(), std::move(side));
-      out.push_back(g);
-    } else {
-      for (std::uint32_t k = 0; k + 2 < corners; ++k) appendTriangle(t + k);
-    }
-    t += corners - 2;
+    block.records.push_back(g);
   }
 }
 
@@ -235,25 +277,25 @@ CameraBasis cameraBasis(const Camera& camera, int width, int height) {
 GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   GpuScene g;
   // Objects move only when the shutter is open for a while; each moving one's
-  // primitives point to its motion record, appended after every primitive.
+  // primitives (a moving mesh: its header and its triangles' host records)
+  // point to its motion record, appended after every primitive and header.
   const bool shutter = scene.camera.hasShutterInterval();
   std::vector<MotionGpu> motions;
-  std::vector<std::pair<std::size_t, std::size_t>> moving;  // (primitive, motion record)
-  // Reserved once: a reservation per mesh, of exactly what it adds, would defeat
-  // the vector's doubling and copy everything again for every mesh.
-  std::size_t total = 0;
-  for (const Object& ob : scene.objects) total += ob.primitiveCount();
-  g.objects.reserve(total);
+  // (index, motion record): analytic primitives, triangle records of the block, headers.
+  std::vector<std::pair<std::size_t, std::size_t>> moving_analytic, moving_triangles, moving_headers;
+  std::vector<ObjectGpu> analytic;
+  MeshBlock block;
   std::vector<std::pair<std::size_t, std::vector<float>>> sides;  // (primitive, its side data)
   FlattenSettings settings;
   settings.inside_test = static_cast<int>(options.inside_test);
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const Object& ob = scene.objects[i];
     const bool moves = shutter && ob.moving;
-    const std::size_t first = g.objects.size();
+    const std::size_t first = analytic.size(), first_triangle = block.records.size(),
+                      first_header = block.headers.size();
     if (ob.type == ObjectType::Mesh) {
       try {
-        appendMesh(ob, settings, g.objects, sides, moves);
+        appendMesh(ob, settings, analytic, sides, block, moves);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument("objects[" + std::to_string(i) + "]: " + e.what());
       }
@@ -261,27 +303,53 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
       for (std::size_t part = 0; part < ob.primitiveCount(); ++part) {
         std::vector<float> side;
         try {
-          g.objects.push_back(flattenObject(ob, part, settings, side));
+          analytic.push_back(flattenObject(ob, part, settings, side));
         } catch (const std::invalid_argument& e) {
           throw std::invalid_argument("objects[" + std::to_string(i) + "]: " + e.what());
         }
-        if (!side.empty()) sides.emplace_back(g.objects.size() - 1, std::move(side));
+        if (!side.empty()) sides.emplace_back(analytic.size() - 1, std::move(side));
       }
     }
     if (!moves) continue;
-    for (std::size_t i = first; i < g.objects.size(); ++i) moving.emplace_back(i, motions.size());
+    for (std::size_t k = first; k < analytic.size(); ++k) moving_analytic.emplace_back(k, motions.size());
+    for (std::size_t k = first_triangle; k < block.records.size(); ++k) moving_triangles.emplace_back(k, motions.size());
+    for (std::size_t k = first_header; k < block.headers.size(); ++k) moving_headers.emplace_back(k, motions.size());
     motions.push_back(flattenMotion(ob.transform, ob.transform_end, scene.camera));
   }
-  const std::size_t primitives = g.objects.size();
-  for (const auto& [i, k] : moving) {
-    const std::size_t offset = primitives + k - i;
+
+  // Host records: analytic primitives, triangle records, headers, motion, data.
+  const std::size_t base = analytic.size(), triangles = block.records.size(), meshes = block.headers.size();
+  g.triangle_base = base;
+  g.primitive_count = base + triangles;
+  g.mesh_count = meshes;
+  g.objects = std::move(analytic);
+  g.objects.reserve(base + triangles + meshes + motions.size());
+  g.objects.insert(g.objects.end(), block.records.begin(), block.records.end());
+  block.records = {};
+  const std::size_t extras_at = block.positions.size();
+  if (extras_at + block.extras.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw std::invalid_argument("scene too large: the meshes hold more than 2^31 values together");
+  for (MeshGpu& h : block.headers) {
+    h.first_triangle += static_cast<int>(base);
+    for (int* offset : {&h.normal_offset, &h.texcoord_offset, &h.material_offset})
+      if (*offset >= 0) *offset += static_cast<int>(extras_at);
+    ObjectGpu slot;
+    std::memcpy(&slot, &h, sizeof slot);
+    g.objects.push_back(slot);
+  }
+  const std::size_t motion_base = g.objects.size();
+  auto setMotion = [&](std::size_t index, std::size_t k) {
+    const std::size_t offset = motion_base + k - index;
     if (offset >= (std::size_t(1) << (31 - OBJECT_MOTION_SHIFT)))
       throw std::invalid_argument("motion blur: a moving object's primitives must be among the first " +
                                   std::to_string(1u << (31 - OBJECT_MOTION_SHIFT)) + " of the scene");
-    ObjectGpu& o = g.objects[i];
+    ObjectGpu& o = g.objects[index];
     o.has_transform = OBJECT_MOVING;
     o.flags |= static_cast<int>(offset << OBJECT_MOTION_SHIFT);
-  }
+  };
+  for (const auto& [i, k] : moving_analytic) setMotion(i, k);
+  for (const auto& [i, k] : moving_triangles) setMotion(base + i, k);
+  for (const auto& [i, k] : moving_headers) setMotion(base + triangles + i, k);
   for (const MotionGpu& m : motions) {
     ObjectGpu slot;
     std::memcpy(&slot, &m, sizeof slot);
@@ -293,7 +361,9 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
       throw std::invalid_argument("scene too large: side data beyond 2^31 records of its primitive");
     setSideDataOffset(g.objects[i], static_cast<int>(record - i));
   }
-  g.primitive_count = primitives;
+  g.triangles = std::move(block.triangles);
+  g.mesh_data = std::move(block.positions);
+  g.mesh_data.insert(g.mesh_data.end(), block.extras.begin(), block.extras.end());
   std::map<const ImageTexture*, int> image_offsets;  // each image's texels once, however many materials use it
   for (const Material& m : scene.materials) {
     MaterialGpu mg = flattenMaterial(m);

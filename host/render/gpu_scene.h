@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "accel/scene_geometry.h"
 #include "kernels/shared/camera_gpu.h"
 #include "kernels/shared/light_gpu.h"
 #include "kernels/shared/material_gpu.h"
@@ -13,12 +14,9 @@
 
 namespace prism {
 
-struct GpuScene {
-  // Every primitive (the index is its primid), then the motion records of the
-  // moving ones (kernels/shared/motion_gpu.h) and the data records of kinds
-  // with side data (ObjectDataGpu), which are not primitives.
-  std::vector<ObjectGpu> objects;
-  std::size_t primitive_count = 0;
+// The geometry (accel/scene_geometry.h): the analytic primitives first, in
+// scene order, then the meshes' triangles, mesh by mesh in scene order.
+struct GpuScene : SceneGeometry {
   std::vector<MaterialGpu> materials;
   // The image textures' texels, each image once: linear RGB, float4 each
   // (MaterialGpu::image_offset counts in them); at least one texel.

@@ -45,10 +45,13 @@ std::vector<RayGpu> toRayGpu(const std::vector<QueryRay>& rays) {
 
 RayQueryEngine::RayQueryEngine(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
                                std::vector<MaterialGpu> materials, const AccelBuildOptions& options)
-    : m_context(context), m_objects(std::move(objects)) {
-  m_accel = buildAccel(kind, m_objects, options);
-  m_object_buffer = Buffer(context, m_objects.size() * sizeof(ObjectGpu));
-  m_object_buffer.writeVector(m_objects);
+    : RayQueryEngine(context, geometryFromRecords(std::move(objects)), kind, std::move(materials), options) {}
+
+RayQueryEngine::RayQueryEngine(Context& context, SceneGeometry geometry, AccelKind kind,
+                               std::vector<MaterialGpu> materials, const AccelBuildOptions& options)
+    : m_context(context), m_geometry(std::move(geometry)) {
+  m_accel = buildAccel(kind, m_geometry.objects, options);
+  m_geometry_buffers.upload(context, m_geometry);
   m_has_materials = !materials.empty();
   if (m_has_materials) {
     m_material_buffer = Buffer(context, materials.size() * sizeof(MaterialGpu));
@@ -84,7 +87,7 @@ std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, d
     auto start = Clock::now();
     KernelLaunch launch = m_context.launch(m_extend);
     launch.arg(ray_buffer).arg(static_cast<int>(n));
-    m_buffers.bind(launch, m_object_buffer, static_cast<int>(primitiveCount(m_objects))).arg(hit_buffer).run(n);
+    m_buffers.bind(launch, m_geometry_buffers).arg(hit_buffer).run(n);
     m_context.finish();
     seconds += secondsSince(start);
     hit_buffer.read(hits.data() + first, n * sizeof(HitGpu));
@@ -110,7 +113,7 @@ std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, b
     auto start = Clock::now();
     KernelLaunch launch = m_context.launch(m_occlude);
     launch.arg(ray_buffer).arg(static_cast<int>(n));
-    m_buffers.bind(launch, m_object_buffer, static_cast<int>(primitiveCount(m_objects)))
+    m_buffers.bind(launch, m_geometry_buffers)
         .arg(with_materials ? m_material_buffer : no_materials)
         .arg(out)
         .run(n);
@@ -138,9 +141,9 @@ std::vector<float> RayQueryEngine::transmittance(const std::vector<RayGpu>& rays
   return runOcclude(rays, m_has_materials, trace_seconds);
 }
 
-TraceResult traceRays(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
-                      const std::vector<QueryRay>& rays, bool occlusion) {
-  RayQueryEngine engine(context, std::move(objects), kind);
+TraceResult traceRays(Context& context, SceneGeometry geometry, AccelKind kind, const std::vector<QueryRay>& rays,
+                      bool occlusion) {
+  RayQueryEngine engine(context, std::move(geometry), kind);
   TraceResult result;
   if (occlusion)
     result.occluded = engine.occluded(rays, &result.trace_seconds);
@@ -154,14 +157,16 @@ TraceResult traceRays(Context& context, std::vector<ObjectGpu> objects, AccelKin
 std::vector<HitGpu> traceClosest(Context& context, const Scene& scene, const std::vector<RayGpu>& rays,
                                  AccelKind accel) {
   GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
-  RayQueryEngine engine(context, std::move(gpu.objects), accel, std::move(gpu.materials));
+  std::vector<MaterialGpu> materials = std::move(gpu.materials);
+  RayQueryEngine engine(context, std::move(static_cast<SceneGeometry&>(gpu)), accel, std::move(materials));
   return engine.intersect(rays);
 }
 
 std::vector<float> traceTransmittance(Context& context, const Scene& scene, const std::vector<RayGpu>& rays,
                                       AccelKind accel) {
   GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
-  RayQueryEngine engine(context, std::move(gpu.objects), accel, std::move(gpu.materials));
+  std::vector<MaterialGpu> materials = std::move(gpu.materials);
+  RayQueryEngine engine(context, std::move(static_cast<SceneGeometry&>(gpu)), accel, std::move(materials));
   return engine.transmittance(rays);
 }
 

@@ -47,6 +47,9 @@ class RayQueryEngine {
  public:
   // `materials` may be empty: transmittance() then treats every primitive as
   // opaque (and occluded() always does).
+  RayQueryEngine(Context& context, SceneGeometry geometry, AccelKind kind, std::vector<MaterialGpu> materials = {},
+                 const AccelBuildOptions& options = {});
+  // Over records alone (geometryFromRecords): every triangle a record.
   RayQueryEngine(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
                  std::vector<MaterialGpu> materials = {}, const AccelBuildOptions& options = {});
 
@@ -61,7 +64,9 @@ class RayQueryEngine {
   std::vector<float> transmittance(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr);
 
   const DeviceAccel& accel() const { return *m_accel; }
-  std::size_t objectCount() const { return m_objects.size(); }
+  const SceneGeometry& geometry() const { return m_geometry; }
+  // Device bytes of the geometry and of the structure together.
+  std::size_t deviceBytes() const { return deviceGeometryBytes(m_geometry) + m_accel->stats.bytes; }
   // Seconds spent compiling (or loading from the cache) the two kernels.
   double compileSeconds() const { return m_compile_seconds; }
 
@@ -72,9 +77,10 @@ class RayQueryEngine {
   std::vector<float> runOcclude(const std::vector<RayGpu>& rays, bool with_materials, double* trace_seconds);
 
   Context& m_context;
-  std::vector<ObjectGpu> m_objects;
+  SceneGeometry m_geometry;
   std::unique_ptr<DeviceAccel> m_accel;
-  Buffer m_object_buffer, m_material_buffer;
+  GeometryBuffers m_geometry_buffers;
+  Buffer m_material_buffer;
   bool m_has_materials = false;
   AccelBuffers m_buffers;
   cl_kernel m_extend = nullptr, m_occlude = nullptr;
@@ -93,7 +99,7 @@ struct TraceResult {
   double compile_seconds = 0;          // kernels built or loaded, and warmed up
   AccelStats accel;                    // the structure's build, build_seconds included
 };
-TraceResult traceRays(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
-                      const std::vector<QueryRay>& rays, bool occlusion);
+TraceResult traceRays(Context& context, SceneGeometry geometry, AccelKind kind, const std::vector<QueryRay>& rays,
+                      bool occlusion);
 
 }  // namespace prism

@@ -124,8 +124,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   const size_t pixels = static_cast<size_t>(options.width) * options.height;
   m_camera = Buffer(m_context, sizeof(CameraGpu));
   m_camera.write(&gpu.camera, sizeof(CameraGpu));
-  m_objects = Buffer(m_context, gpu.objects.size() * sizeof(ObjectGpu));
-  m_objects.writeVector(gpu.objects);
+  m_geometry.upload(m_context, gpu);
   {
     std::unique_ptr<DeviceAccel> accel = buildAccel(options.accel, gpu.objects, m_accel_build);
     m_accel.upload(m_context, *accel);
@@ -255,7 +254,7 @@ void Renderer::renderSamples(const SamplingOptions& sampling, RenderResult& resu
       for (std::uint64_t first = batch_first; first < batch_end; first += kSliceRays)
         positions(first, static_cast<size_t>(std::min<std::uint64_t>(kSliceRays, batch_end - first)));
       // Per-pixel modes number their samples pixel by pixel: no sort needed.
-      m_firsthit->rasterize(m_objects, m_sample_xy, static_cast<size_t>(batch_first),
+      m_firsthit->rasterize(m_geometry, m_sample_xy, static_cast<size_t>(batch_first),
                             static_cast<size_t>(batch_end - batch_first),
                             sampling.mode == AaMode::Quincunx ? 0 : sampling.spp);
     }
@@ -337,7 +336,7 @@ std::vector<float> Renderer::traceFilmPositions(const std::vector<float>& xy,
         const size_t z = std::min<size_t>(kZBufferBatch, count - first);
         m_zbuffer_xy.reserve(m_context, z * kPositionBytesPerSample);
         m_zbuffer_xy.write(xy.data() + 2 * (begin + first), z * kPositionBytesPerSample);
-        m_firsthit->rasterize(m_objects, m_zbuffer_xy, 0, z);
+        m_firsthit->rasterize(m_geometry, m_zbuffer_xy, 0, z);
       }
       m_zbuffer_first = first % kZBufferBatch;
       m_chunk_xy.write(xy.data() + 2 * (begin + first), m * kPositionBytesPerSample);
@@ -366,7 +365,7 @@ void Renderer::traceChunk(int first_key, size_t n) {
       .run(n);
   m_stats->rays_by_kind[RAY_KIND_PRIMARY] += n;
   m_stats->waves = std::max(m_stats->waves, 1);
-  if (m_zbuffer) m_firsthit->resolve(m_objects, m_zbuffer_first, n, m_hits);
+  if (m_zbuffer) m_firsthit->resolve(m_geometry, m_zbuffer_first, n, m_hits);
   traceSlice(0, n, m_zbuffer);
 }
 
@@ -380,7 +379,6 @@ void Renderer::traceLevel(int depth, size_t count) {
 }
 
 void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
-  const int object_count = static_cast<int>(m_scene->primitive_count);
   const int light_count = static_cast<int>(m_scene->lights.size());
   const RenderOptions& opt = *m_options;
   m_stats->rays_per_depth[depth] += n;
@@ -388,7 +386,7 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
   if (!have_hits) {
     KernelLaunch extend = m_context.launch(m_extend);
     extend.arg(m_work).arg(static_cast<int>(n));
-    m_accel.bind(extend, m_objects, object_count).arg(m_hits).run(n);
+    m_accel.bind(extend, m_geometry).arg(m_hits).run(n);
   }
 
   cl_float4 ambient, background;
@@ -398,7 +396,7 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
   }
   KernelLaunch shade = m_context.launch(m_shade);
   shade.arg(m_work).arg(m_hits).arg(static_cast<int>(n));
-  m_accel.bind(shade, m_objects, object_count)
+  m_accel.bind(shade, m_geometry)
       .arg(m_materials)
       .arg(m_texels)
       .arg(m_lights)
@@ -437,7 +435,6 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
 }
 
 void Renderer::traceShadows(size_t surfaces) {
-  const int object_count = static_cast<int>(m_scene->primitive_count);
   const int light_count = static_cast<int>(m_scene->lights.size());
   const size_t per_run = std::max<size_t>(1, kShadowSlots / m_shadow_slots);  // shaded points per run
   for (size_t first = 0; first < surfaces; first += per_run) {
@@ -459,7 +456,7 @@ void Renderer::traceShadows(size_t surfaces) {
     if (live == 0) continue;
     KernelLaunch occlude = m_context.launch(m_occlude);
     occlude.arg(m_shadow_queue).arg(static_cast<int>(live));
-    m_accel.bind(occlude, m_objects, object_count).arg(m_materials).arg(m_shadow_light).run(live);
+    m_accel.bind(occlude, m_geometry).arg(m_materials).arg(m_shadow_light).run(live);
     accumulate(m_shadow_light, live);
   }
 }
@@ -508,7 +505,7 @@ void Renderer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
   PRISM_CL_CHECK(clGetDeviceInfo(device.device, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof max_alloc, &max_alloc, nullptr));
   const std::uint64_t global = device.global_memory_bytes;
   // Everything else this render keeps on the device: queues, scene, structure, AOVs.
-  std::uint64_t other = pixels * kBytesPerPixel + m_scene->objects.size() * sizeof(ObjectGpu) +
+  std::uint64_t other = pixels * kBytesPerPixel + deviceGeometryBytes(*m_scene) +
                         m_stats->accel_stats.bytes + m_tile.bytes();
   for (const Buffer* b : {&m_work, &m_hits, &m_emit, &m_children, &m_child_tags, &m_surfaces, &m_shadows,
                           &m_shadow_tags, &m_shadow_queue, &m_shadow_light, &m_counts, &m_offsets, &m_chunk_xy,

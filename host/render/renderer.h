@@ -152,12 +152,13 @@ class Renderer {
   int m_shadow_slots = 0;  // spawned feelers per shaded point: the area lights' samples summed
   size_t m_film_batch_slices = 256;
   AccelBuildOptions m_accel_build;
+  GeometryBuffers m_geometry;
   AccelBuffers m_accel;
   // render/light_buffer.h (a word or four each without it)
   Buffer m_light_buffer_cells, m_light_buffer_ids, m_light_buffer_windows;
   int m_light_buffer_resolution = 1;
   Buffer m_texels;  // image textures (GpuScene::texels)
-  Buffer m_camera, m_objects, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
+  Buffer m_camera, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
   Buffer m_film;       // rgba per primary sample, indexed by the sample's key
   Buffer m_sample_xy;  // film positions of all samples (for resolve)
   Buffer m_zbuffer_xy;  // adaptive sampling: the positions of the Z-buffer's batch

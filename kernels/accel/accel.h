@@ -13,8 +13,9 @@
  * occlusion query). The program is built with -DPRISM_ACCEL_<NAME>
  * (host/accel/accel_structure.h gives the options); without one it is `none`.
  *
- * ACCEL_PARAMS is the same list for every structure, so the host binds one set:
- *   objects, object_count   every primitive (ObjectGpu), the index is its id;
+ * ACCEL_PARAMS is the same list for every structure, so the host binds one set
+ * (a kernel takes ACCEL_KERNEL_PARAMS and makes `geom` with ACCEL_GEOMETRY):
+ *   geom                    every primitive by id (geometry/primitive.h);
  *   accel_nodes             float4 words: [0], [1] the box of the bounded
  *                           primitives, then the structure's nodes;
  *   accel_packets           leaf contents, TriPacketGpu;
@@ -26,10 +27,16 @@
  * inlines each file once: the first inclusion must not sit in a skipped branch. */
 #include "accel/leaf_packets.h"
 
-#define ACCEL_PARAMS                                                                       \
-  __global const ObjectGpu *objects, int object_count, __global const float4 *accel_nodes, \
-      __global const TriPacketGpu *accel_packets, __global const int *accel_unbounded, int accel_unbounded_count
-#define ACCEL_ARGS objects, object_count, accel_nodes, accel_packets, accel_unbounded, accel_unbounded_count
+#define ACCEL_BUFFER_PARAMS                                                                            \
+  __global const float4 *accel_nodes, __global const TriPacketGpu *accel_packets, __global const int *accel_unbounded, \
+      int accel_unbounded_count
+#define ACCEL_PARAMS const Geometry *geom, ACCEL_BUFFER_PARAMS
+#define ACCEL_ARGS geom, accel_nodes, accel_packets, accel_unbounded, accel_unbounded_count
+#define ACCEL_KERNEL_PARAMS GEOMETRY_KERNEL_PARAMS, ACCEL_BUFFER_PARAMS
+/* The first statement of a kernel that takes ACCEL_KERNEL_PARAMS. */
+#define ACCEL_GEOMETRY                     \
+  const Geometry geom_value = GEOMETRY_INIT; \
+  const Geometry* geom = &geom_value
 
 #ifndef PRISM_ACCEL_STACK
 #define PRISM_ACCEL_STACK 64

@@ -93,7 +93,7 @@ PRISM_HOT bool bsp_next_leaf(__global const BspNodeGpu* nodes, const float* org,
 PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
-  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
+  unbounded_closest(geom, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
   float3 inv = accel_safe_rcp(d);
   BspWalk w;
   if (!bsp_walk_start(&w, accel_nodes, o, inv, tmin, best)) return hit->prim >= 0;
@@ -102,13 +102,13 @@ PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, f
   CellLeaf leaf;
   float org[3] = {o.x, o.y, o.z}, rcp[3] = {inv.x, inv.y, inv.z};
   while (bsp_next_leaf(nodes, org, rcp, best, &w, &leaf))
-    if (cell_leaf_closest(&leaf, accel_packets, &pr, o, d, tmin, &best, hit, objects)) break;
+    if (cell_leaf_closest(&leaf, accel_packets, &pr, o, d, tmin, &best, hit, geom)) break;
   return hit->prim >= 0;
 }
 
 PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
                                     float tmin, float tmax) {
-  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
+  float carried = unbounded_transmittance(geom, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   float3 inv = accel_safe_rcp(d);
   BspWalk w;
@@ -121,7 +121,7 @@ PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu
   float org[3] = {o.x, o.y, o.z}, rcp[3] = {inv.x, inv.y, inv.z};
   while (carried > 0.0f && bsp_next_leaf(nodes, org, rcp, PRISM_INF, &w, &leaf))
     carried =
-        cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, objects, materials);
+        cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, geom, materials);
   return carried;
 }
 

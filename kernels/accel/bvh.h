@@ -80,7 +80,7 @@ PRISM_HOT void bvh_leaf_range(int code, int* start, int* count) {
 PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
-  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
+  unbounded_closest(geom, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
   BvhRay r = bvh_ray(o, d, time, accel_nodes);
   PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
@@ -126,7 +126,7 @@ PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, f
     } else {
       int start, count;
       bvh_leaf_range(code, &start, &count);
-      for (int p = 0; p < count; ++p) packet_closest(accel_packets + start + p, &pr, o, d, tmin, &best, hit, objects);
+      for (int p = 0; p < count; ++p) packet_closest(accel_packets + start + p, &pr, o, d, tmin, &best, hit, geom);
     }
     while (sp > 0 && stack_t[sp - 1] > best * ACCEL_FAR_SCALE) --sp;
     if (sp == 0) break;
@@ -137,7 +137,7 @@ PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, f
 
 PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
                                     float tmin, float tmax) {
-  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
+  float carried = unbounded_transmittance(geom, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   BvhRay r = bvh_ray(o, d, time, accel_nodes);
   PacketRay pr = packet_ray(o, d, time);
@@ -160,7 +160,7 @@ PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu
       bvh_leaf_range(code, &start, &count);
       for (int p = 0; p < count; ++p) {
         carried =
-            packet_transmittance(accel_packets + start + p, &pr, o, d, tmin, tmax, carried, 0, objects, materials);
+            packet_transmittance(accel_packets + start + p, &pr, o, d, tmin, tmax, carried, 0, geom, materials);
         if (carried == 0.0f) return 0.0f;
       }
     }

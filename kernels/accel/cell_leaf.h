@@ -20,8 +20,8 @@ typedef struct CellLeaf {
 /* Tests the leaf's packets for the closest hit; true when that hit is final. */
 PRISM_HOT bool cell_leaf_closest(const CellLeaf* leaf, __global const TriPacketGpu* packets, const PacketRay* pr,
                                  float3 o, float3 d, float tmin, float* best, HitGpu* hit,
-                                 __global const ObjectGpu* objects) {
-  for (int p = 0; p < leaf->count; ++p) packet_closest(packets + leaf->start + p, pr, o, d, tmin, best, hit, objects);
+                                 const Geometry* geom) {
+  for (int p = 0; p < leaf->count; ++p) packet_closest(packets + leaf->start + p, pr, o, d, tmin, best, hit, geom);
   return accel_before(*best, leaf->t1);
 }
 
@@ -29,10 +29,10 @@ PRISM_HOT bool cell_leaf_closest(const CellLeaf* leaf, __global const TriPacketG
  * the mailbox has not counted yet. */
 PRISM_HOT float cell_leaf_transmittance(const CellLeaf* leaf, __global const TriPacketGpu* packets, const PacketRay* pr,
                                         float3 o, float3 d, float tmin, float tmax, float carried, Mailbox* mailbox,
-                                        __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
+                                        const Geometry* geom, __global const MaterialGpu* materials) {
   for (int p = 0; p < leaf->count && carried > 0.0f; ++p)
     carried =
-        packet_transmittance(packets + leaf->start + p, pr, o, d, tmin, tmax, carried, mailbox, objects, materials);
+        packet_transmittance(packets + leaf->start + p, pr, o, d, tmin, tmax, carried, mailbox, geom, materials);
   return carried;
 }
 

@@ -12,7 +12,7 @@
 #ifndef PRISM_ACCEL_LEAF_PACKETS_H
 #define PRISM_ACCEL_LEAF_PACKETS_H
 
-#include "geometry/object.h"
+#include "geometry/primitive.h"
 #include "shared/material_gpu.h"
 #include "shared/tri_packet_gpu.h"
 
@@ -104,9 +104,9 @@ PRISM_HOT int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay
 /* The ray of a moving packet: mapped into its object's space at the ray's time
  * (t, u and v are the same in both spaces). */
 PRISM_HOT PacketRay moving_packet_ray(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d,
-                                      __global const ObjectGpu* objects) {
+                                      const Geometry* geom) {
   float m[12];
-  object_world_to_object(&objects[pk->prim[0] & ~PACKET_MOVING], r->time, m);
+  prim_world_to_object(geom, pk->prim[0] & ~PACKET_MOVING, r->time, m);
   return packet_ray(xform_point(m, o), xform_vector(m, d), r->time);
 }
 
@@ -121,11 +121,11 @@ PRISM_HOT bool packet_moves(__global const TriPacketGpu* pk) {
 }
 
 PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
-                              float* best, HitGpu* hit, __global const ObjectGpu* objects) {
+                              float* best, HitGpu* hit, const Geometry* geom) {
   float4 t, u, v;
   int4 ok, prim = vload4(0, pk->prim);
   if (packet_moves(pk)) {
-    PacketRay moved = moving_packet_ray(pk, r, o, d, objects);
+    PacketRay moved = moving_packet_ray(pk, r, o, d, geom);
     ok = packet_intersect(pk, &moved, tmin, *best, 1, &t, &u, &v);
     prim = select(prim, prim & (int4)(~PACKET_MOVING), prim >= 0); /* ids of the filled lanes */
   } else if (any(prim >= 0)) {
@@ -150,15 +150,15 @@ PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* 
       if (id < 0) continue;
       float tt, uu, vv;
       /* nextafter: an exact tie must reach accel_accept */
-      if (object_intersect(&objects[id], o, d, r->time, tmin, nextafter(*best, PRISM_INF), &tt, &uu, &vv))
+      if (prim_intersect(geom, id, o, d, r->time, tmin, nextafter(*best, PRISM_INF), &tt, &uu, &vv))
         accel_accept(tt, uu, vv, id, best, hit);
     }
   }
 }
 
 /* k_trans of a primitive; NULL materials (plain occlusion queries): opaque. */
-PRISM_HOT float accel_transmit(__global const MaterialGpu* materials, __global const ObjectGpu* objects, int prim) {
-  return materials ? materials[objects[prim].material].transmit : 0.0f;
+PRISM_HOT float accel_transmit(__global const MaterialGpu* materials, const Geometry* geom, int prim) {
+  return materials ? materials[prim_material(geom, prim)].transmit : 0.0f;
 }
 
 /* Shadow rays in the spatial subdivisions, where one primitive sits in several
@@ -193,9 +193,9 @@ PRISM_HOT int mailbox_first(Mailbox* m, int prim) {
 /* `carried` after a hit on prim; the mailbox only for the spatial
  * subdivisions (NULL: every hit counts, as in the BVH, which holds each
  * primitive once). */
-PRISM_HOT float accel_count_hit(float carried, int prim, Mailbox* mailbox, __global const ObjectGpu* objects,
+PRISM_HOT float accel_count_hit(float carried, int prim, Mailbox* mailbox, const Geometry* geom,
                                 __global const MaterialGpu* materials) {
-  float k = accel_transmit(materials, objects, prim);
+  float k = accel_transmit(materials, geom, prim);
   if (k == 0.0f) return 0.0f; /* opaque: blocked wherever it is */
   if (mailbox) {
     int first = mailbox_first(mailbox, prim);
@@ -207,11 +207,11 @@ PRISM_HOT float accel_count_hit(float carried, int prim, Mailbox* mailbox, __glo
 
 PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d,
                                      float tmin, float tmax, float carried, Mailbox* mailbox,
-                                     __global const ObjectGpu* objects, __global const MaterialGpu* materials) {
+                                     const Geometry* geom, __global const MaterialGpu* materials) {
   float4 t, u, v;
   int4 ok, prim = vload4(0, pk->prim);
   if (packet_moves(pk)) {
-    PacketRay moved = moving_packet_ray(pk, r, o, d, objects);
+    PacketRay moved = moving_packet_ray(pk, r, o, d, geom);
     ok = packet_intersect(pk, &moved, tmin, tmax, 0, &t, &u, &v);
     prim = select(prim, prim & (int4)(~PACKET_MOVING), prim >= 0); /* ids of the filled lanes */
   } else if (any(prim >= 0)) {
@@ -225,7 +225,7 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
     vstore4(prim, 0, pa);
     for (int k = 0; k < 4; ++k) {
       if (!oka[k]) continue;
-      carried = accel_count_hit(carried, pa[k], mailbox, objects, materials);
+      carried = accel_count_hit(carried, pa[k], mailbox, geom, materials);
       if (carried == 0.0f) return 0.0f;
     }
   }
@@ -234,8 +234,8 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
       int id = -pk->prim[k] - 2;
       if (id < 0) continue;
       float tt, uu, vv;
-      if (object_intersect(&objects[id], o, d, r->time, tmin, tmax, &tt, &uu, &vv)) {
-        carried = accel_count_hit(carried, id, mailbox, objects, materials);
+      if (prim_intersect(geom, id, o, d, r->time, tmin, tmax, &tt, &uu, &vv)) {
+        carried = accel_count_hit(carried, id, mailbox, geom, materials);
         if (carried == 0.0f) return 0.0f;
       }
     }
@@ -244,24 +244,24 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
 }
 
 /* Planes and other unbounded primitives: tested by every ray. */
-PRISM_HOT void unbounded_closest(__global const ObjectGpu* objects, __global const int* list, int count, float3 o,
+PRISM_HOT void unbounded_closest(const Geometry* geom, __global const int* list, int count, float3 o,
                                  float3 d, float time, float tmin, float* best, HitGpu* hit) {
   for (int i = 0; i < count; ++i) {
     int id = list[i];
     float t, u, v;
-    if (object_intersect(&objects[id], o, d, time, tmin, nextafter(*best, PRISM_INF), &t, &u, &v))
+    if (prim_intersect(geom, id, o, d, time, tmin, nextafter(*best, PRISM_INF), &t, &u, &v))
       accel_accept(t, u, v, id, best, hit);
   }
 }
 
-PRISM_HOT float unbounded_transmittance(__global const ObjectGpu* objects, __global const MaterialGpu* materials,
+PRISM_HOT float unbounded_transmittance(const Geometry* geom, __global const MaterialGpu* materials,
                                         __global const int* list, int count, float3 o, float3 d, float time,
                                         float tmin, float tmax) {
   float carried = 1.0f;
   for (int i = 0; i < count && carried > 0.0f; ++i) {
     int id = list[i];
     float t, u, v;
-    if (object_intersect(&objects[id], o, d, time, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, objects, id);
+    if (prim_intersect(geom, id, o, d, time, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, geom, id);
   }
   return carried;
 }

@@ -8,9 +8,9 @@
 PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
-  for (int i = 0; i < object_count; ++i) {
+  for (int i = 0; i < geom->prim_count; ++i) {
     float t, u, v;
-    if (object_intersect(&objects[i], o, d, time, tmin, best, &t, &u, &v)) {
+    if (prim_intersect(geom, i, o, d, time, tmin, best, &t, &u, &v)) {
       best = t;
       hit->t = t;
       hit->prim = i;
@@ -26,9 +26,9 @@ PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, f
 PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
                                     float tmin, float tmax) {
   float carried = 1.0f;
-  for (int i = 0; i < object_count && carried > 0.0f; ++i) {
+  for (int i = 0; i < geom->prim_count && carried > 0.0f; ++i) {
     float t, u, v;
-    if (object_intersect(&objects[i], o, d, time, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, objects, i);
+    if (prim_intersect(geom, i, o, d, time, tmin, tmax, &t, &u, &v)) carried *= accel_transmit(materials, geom, i);
   }
   return carried;
 }

@@ -135,7 +135,7 @@ PRISM_HOT bool octree_next_leaf(__global const OctreeNodeGpu* nodes, float3 o, f
 PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, float tmin, float tmax, HitGpu* hit) {
   accel_miss(hit);
   float best = tmax;
-  unbounded_closest(objects, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
+  unbounded_closest(geom, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
   float3 inv = accel_safe_rcp(d);
   PacketRay pr = packet_ray(o, d, time);
   __global const OctreeNodeGpu* nodes = (__global const OctreeNodeGpu*)(accel_nodes + 2);
@@ -143,7 +143,7 @@ PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, f
   octree_walk_start(&w);
   CellLeaf leaf;
   while (octree_next_leaf(nodes, o, inv, tmin, tmax, best, true, &w, &leaf))
-    if (cell_leaf_closest(&leaf, accel_packets, &pr, o, d, tmin, &best, hit, objects)) break;
+    if (cell_leaf_closest(&leaf, accel_packets, &pr, o, d, tmin, &best, hit, geom)) break;
   return hit->prim >= 0;
 }
 
@@ -152,7 +152,7 @@ PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, f
  * mailbox counts each primitive once whatever the order. */
 PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials, float3 o, float3 d, float time,
                                     float tmin, float tmax) {
-  float carried = unbounded_transmittance(objects, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
+  float carried = unbounded_transmittance(geom, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
   float3 inv = accel_safe_rcp(d);
   PacketRay pr = packet_ray(o, d, time);
@@ -164,7 +164,7 @@ PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu
   CellLeaf leaf;
   while (carried > 0.0f && octree_next_leaf(nodes, o, inv, tmin, tmax, PRISM_INF, false, &w, &leaf))
     carried =
-        cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, objects, materials);
+        cell_leaf_transmittance(&leaf, accel_packets, &pr, o, d, tmin, tmax, carried, &mailbox, geom, materials);
   return carried;
 }
 

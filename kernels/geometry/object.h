@@ -140,21 +140,9 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
       n = patch_normal(object_side_data(ob), hit.u, hit.v);
       if (want_uv) *uv = patch_uv(q, hit.u, hit.v);
       break;
-    default:
+    default: /* a triangle record (a mesh's triangles are compact: geometry/primitive.h) */
       n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));
       *uv = (float2)(hit.u, hit.v);
-      if (ob->flags & OBJECT_FLAG_TEXCOORDS) {
-        __global const float* w = ob->world_to_object;
-        *uv = (1.0f - hit.u - hit.v) * (float2)(q[9], q[10]) + hit.u * (float2)(q[11], w[9]) + hit.v * (float2)(w[10], w[11]);
-      }
-      if (ob->flags & OBJECT_FLAG_VERTEX_NORMALS) {
-        __global const float* vn = ob->world_to_object;
-        float3 smooth = (1.0f - hit.u - hit.v) * load3g(vn) + hit.u * load3g(vn + 3) + hit.v * load3g(vn + 6);
-        /* Interpolated normals may face away from the winding's normal; keep the
-         * side, so inside/outside decisions follow the geometry. */
-        float len = length(smooth);
-        if (len > 0.0f) n = dot(smooth, n) < 0.0f ? -smooth / len : smooth / len;
-      }
       break;
   }
   *normal = ob->has_transform ? normalize(xform_normal(m, n)) : n;

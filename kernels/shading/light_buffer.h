@@ -50,14 +50,14 @@ PRISM_HOT float point_light_transmittance(ACCEL_PARAMS, LIGHT_BUFFER_PARAMS, __g
   for (int k = 0; k < count && carried > 0.0f; ++k) {
     int prim = light_buffer_ids[first + k];
     float t, u, v;
-    if (object_intersect(&objects[prim], o, d, time, 0.0f, dist, &t, &u, &v))
-      carried *= accel_transmit(materials, objects, prim);
+    if (prim_intersect(geom, prim, o, d, time, 0.0f, dist, &t, &u, &v))
+      carried *= accel_transmit(materials, geom, prim);
   }
   for (int k = 0; k < light_buffer_cells[1] && carried > 0.0f; ++k) {
     int prim = light_buffer_ids[light_buffer_cells[0] + k];
     float t, u, v;
-    if (object_intersect(&objects[prim], o, d, time, 0.0f, dist, &t, &u, &v))
-      carried *= accel_transmit(materials, objects, prim);
+    if (prim_intersect(geom, prim, o, d, time, 0.0f, dist, &t, &u, &v))
+      carried *= accel_transmit(materials, geom, prim);
   }
   return carried;
 #else

@@ -18,15 +18,11 @@
 #define POLYGON_RADIAL 1
 #define POLYGON_LEFT_RIGHT 2
 
-/* A triangle whose world_to_object array holds unit vertex normals n0, n1, n2
- * (9 floats) to interpolate, instead of a matrix (triangles are stored in world
- * space and need none). */
+/* A mesh (shared/mesh_gpu.h) with unit vertex normals to interpolate. */
 #define OBJECT_FLAG_VERTEX_NORMALS 1
 /* A quadric closed by its clip box's faces (geometry/quadric.h). */
 #define OBJECT_FLAG_CAPPED 2
-/* A mesh triangle with texture coordinates at its vertices, in the words the
- * vertices leave free: (p[9], p[10]), (p[11], world_to_object[9]),
- * (world_to_object[10], world_to_object[11]). */
+/* A mesh with texture coordinates at its vertices. */
 #define OBJECT_FLAG_TEXCOORDS 4
 
 /* has_transform values. A moving object keeps its geometry (and vertex normals)
@@ -52,7 +48,8 @@ typedef struct ObjectGpu {
   int has_transform; /* 0: none; OBJECT_STATIC: intersect in object space through `world_to_object`; OBJECT_MOVING */
   int flags;    /* OBJECT_FLAG_* and, when moving, the motion record's offset; aligns the arrays */
   /* sphere: center xyz, radius; box: min xyz, max xyz; plane: point xyz, normal xyz;
-   * triangle: v0 xyz, v1 xyz, v2 xyz (world space); quadric: coefficients A..J
+   * triangle (a triangle object; a mesh's triangles are compact, shared/mesh_gpu.h):
+   * v0 xyz, v1 xyz, v2 xyz (world space); quadric: coefficients A..J
    * (scaled to a largest magnitude of 1), its clip box in side data; polygon:
    * unit normal xyz, plane offset, the two axes it is projected on, vertex
    * count, inside test (POLYGON_*), orientation (+1 or -1) in the projection;
@@ -63,7 +60,7 @@ typedef struct ObjectGpu {
    * points (xyz each, i along u, then j along v) in side data. */
   float p[12];
   /* Rows of the 3x4 world-to-object affine matrix. Object-space normals map back
-   * with its transposed linear part. Smooth triangles: see OBJECT_FLAG_VERTEX_NORMALS. */
+   * with its transposed linear part. */
   float world_to_object[12];
 } ObjectGpu;
 

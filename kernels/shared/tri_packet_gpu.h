@@ -4,14 +4,15 @@
  *   Lanes are structure-of-arrays: lane k of v0x..e2z is triangle k, with
  *   e1 = v1 - v0 and e2 = v2 - v0 rounded to float exactly as the kernel's
  *   scalar triangle_intersect computes them, so both give the same t, u, v.
- *   prim[k] >= 0: a triangle, its index in the object array (the primid);
+ *   prim[k] >= 0: a triangle, its primitive id (a mesh's compact triangle or a
+ *                 triangle record: geometry/primitive.h);
  *   prim[k] == PACKET_EMPTY: an unused lane (zero geometry, never hit);
- *   prim[k] <= -2: object -(prim[k] + 2), a sphere, box or transformed object
- *   tested through object_intersect (its lane geometry is zero).
+ *   prim[k] <= -2: primitive -(prim[k] + 2), a sphere, box or transformed object
+ *   tested through prim_intersect (its lane geometry is zero).
  * A moving packet (PACKET_MOVING set in prim[0]) holds triangles of one moving
  * object in object space, lanes prim[k] = id | PACKET_MOVING (or empty): the
  * ray is mapped once per packet by that object's world-to-object transform at
- * its time, then meets the four at once. */
+ * its time (prim_world_to_object of the first lane), then meets the four at once. */
 #ifndef PRISM_TRI_PACKET_GPU_H
 #define PRISM_TRI_PACKET_GPU_H
 

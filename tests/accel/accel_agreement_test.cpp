@@ -212,7 +212,7 @@ TEST_CASE("all structures agree on rays aimed at each quadric, polygon and polyh
   // around the scene (leaving out the teapot, which stands aside).
   AccelScene scene = mixedScene(300);
   Aabb box;
-  for (std::size_t i = 0; i < primitiveCount(scene.objects); ++i) {
+  for (std::size_t i = 0, n = primitiveCount(scene.objects); i < n; ++i) {
     Aabb b;  // (in place: a record finds its side data from where it sits)
     if (scene.objects[i].type != OBJECT_PATCH && objectBounds(scene.objects[i], &b)) box.extend(b);
   }
@@ -220,7 +220,7 @@ TEST_CASE("all structures agree on rays aimed at each quadric, polygon and polyh
   std::uniform_real_distribution<float> u01(0, 1);
   std::vector<QueryRay> rays;
   std::vector<std::int32_t> quadrics;
-  for (std::size_t i = 0; i < primitiveCount(scene.objects); ++i) {
+  for (std::size_t i = 0, n = primitiveCount(scene.objects); i < n; ++i) {
     const int type = scene.objects[i].type;
     if (type != OBJECT_QUADRIC && type != OBJECT_POLYGON && type != OBJECT_POLYHEDRON) continue;
     quadrics.push_back(static_cast<std::int32_t>(i));
@@ -259,7 +259,7 @@ TEST_CASE("all structures agree on rays aimed at the teapot's patch pieces, and 
   std::vector<QueryRay> rays;
   std::vector<std::int32_t> pieces;
   std::size_t seen = 0;
-  for (std::size_t i = 0; i < primitiveCount(scene.objects); ++i) {
+  for (std::size_t i = 0, n = primitiveCount(scene.objects); i < n; ++i) {
     if (scene.objects[i].type != OBJECT_PATCH || seen++ % 50) continue;
     pieces.push_back(static_cast<std::int32_t>(i));
     Aabb b;
@@ -334,6 +334,40 @@ TinyTriangles tinyTrianglesOnAPlane(std::size_t ray_count) {
                                 (f[2] - o[2]) * scale, INFINITY});
   }
   return out;
+}
+
+TEST_CASE("compact mesh triangles answer as triangle records do, in every structure, in under a fifth of the bytes",
+          "[accel]") {
+  // The same mesh two ways: compact (three vertex indices per triangle, the
+  // kernels' mesh path) and one 112-byte record per triangle (the object path).
+  // The vertices are the same floats, so every answer must be the same bits.
+  SharedMesh mesh = loadTestMesh("bunny/bun_zipper_res2.ply");
+  const SceneGeometry compact = geometryFromMesh(*mesh);
+  const SceneGeometry records = geometryFromRecords(trianglesFromMesh(*mesh));
+  REQUIRE(compact.triangleCount() == mesh->triangleCount());
+  REQUIRE(records.triangleCount() == 0);
+  const Aabb box = boundsOf(records.objects);
+  std::vector<QueryRay> rays = cameraRays(box, 96, 96);
+  for (const QueryRay& q : randomRays(box, 6000, 5)) rays.push_back(q);
+  for (AccelKind kind : allAccelKinds()) {
+    INFO(accelName(kind));
+    RayQueryEngine a(sharedContext(), compact, kind), b(sharedContext(), records, kind);
+    const std::vector<HitGpu> ha = a.intersect(rays), hb = b.intersect(rays);
+    std::size_t same = 0, hits = 0;
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+      same += ha[k].prim == hb[k].prim && sameBits(ha[k].t, hb[k].t) && sameBits(ha[k].u, hb[k].u) &&
+              sameBits(ha[k].v, hb[k].v);
+      hits += ha[k].prim >= 0;
+    }
+    CHECK(same == rays.size());
+    CHECK(hits > rays.size() / 8);
+    CHECK(a.occluded(rays) == b.occluded(rays));
+  }
+  // 12 bytes of indices per triangle and 12 per vertex, against 112 per record.
+  const double per_triangle = double(deviceGeometryBytes(compact)) / compact.triangleCount();
+  INFO(per_triangle << " B/tri compact");
+  CHECK(per_triangle < 12.0 + 12.0 * mesh->vertexCount() / mesh->triangleCount() + 1.0);
+  CHECK(5 * deviceGeometryBytes(compact) < deviceGeometryBytes(records));
 }
 
 TEST_CASE("closest hits at exact ties and a few ulps apart: every structure answers as brute force", "[accel]") {
@@ -476,7 +510,7 @@ TEST_CASE("traceRays answers closest hits and occlusion with the tracing timed a
   };
   for (AccelKind kind : allAccelKinds()) {
     INFO(accelName(kind));
-    TraceResult closest = traceRays(sharedContext(), scene.objects, kind, rays, false);
+    TraceResult closest = traceRays(sharedContext(), geometryFromRecords(scene.objects), kind, rays, false);
     REQUIRE(closest.hits.size() == rays.size());
     CHECK(closest.occluded.empty());
     CHECK(closest.hits[0].prim >= 0);
@@ -489,7 +523,7 @@ TEST_CASE("traceRays answers closest hits and occlusion with the tracing timed a
     }
     CHECK(closest.trace_seconds > 0);
     CHECK(closest.accel.primitives == (kind == AccelKind::None ? scene.objects.size() : scene.objects.size()));
-    TraceResult occluded = traceRays(sharedContext(), scene.objects, kind, rays, true);
+    TraceResult occluded = traceRays(sharedContext(), geometryFromRecords(scene.objects), kind, rays, true);
     CHECK(occluded.hits.empty());
     CHECK(occluded.occluded == std::vector<std::uint8_t>{1, 0, 0, 0});
   }

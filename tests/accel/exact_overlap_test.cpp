@@ -114,7 +114,7 @@ TEST_CASE("boxes overlap cells by intervals, touching included", "[accel][exact]
 TEST_CASE("transformed objects (by their kind's object-space box) and planes get conservative or no bounds", "[accel][exact]") {
   AccelScene scene = mixedScene(0);
   int transformed = 0, planes = 0;
-  for (std::size_t i = 0; i < primitiveCount(scene.objects); ++i) {  // not the data records after them
+  for (std::size_t i = 0, n = primitiveCount(scene.objects); i < n; ++i) {  // not the data records after them
     const ObjectGpu& ob = scene.objects[i];
     Aabb b;
     bool bounded = objectBounds(ob, &b);

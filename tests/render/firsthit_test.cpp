@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "accel_workloads.h"
 #include "kernels/shared/ray_gpu.h"
 #include "render/gpu_scene.h"
 #include "render/ray_queries.h"
@@ -166,9 +167,8 @@ FirstHitStats passStats(const GpuScene& gpu, const std::vector<float>& xy) {
   Context& ctx = sharedContext();
   FirstHitPass pass(ctx);
   pass.prepare(gpu);
-  Buffer objects(ctx, gpu.objects.size() * sizeof(ObjectGpu)), pos(ctx, xy.size() * sizeof(float)),
-      hits(ctx, xy.size() / 2 * sizeof(HitGpu));
-  objects.writeVector(gpu.objects);
+  GeometryBuffers objects(ctx, gpu);
+  Buffer pos(ctx, xy.size() * sizeof(float)), hits(ctx, xy.size() / 2 * sizeof(HitGpu));
   pos.writeVector(xy);
   pass.run(objects, pos, xy.size() / 2, hits);
   return pass.stats();
@@ -260,22 +260,21 @@ TEST_CASE("first hits on a million triangles match the closed form", "[firsthit]
   camera.position = {0.01, -0.02, 3};
   camera.look_at = {0.01, -0.02, 0};
   camera.fov = 2 * std::atan(1.0 / 3.0) * 180 / M_PI;
-  GpuScene gpu;
-  gpu.objects.reserve(2 * static_cast<size_t>(nx) * ny);
-  auto gx = [&](int i) { return static_cast<float>(-1.0 + 2.0 * i / nx); };
-  auto gy = [&](int j) { return static_cast<float>(-1.0 + 2.0 * j / ny); };
+  // One mesh: its triangles are compact on the device (accel/scene_geometry.h).
+  TriangleMesh grid;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      grid.positions.insert(grid.positions.end(), {static_cast<float>(-1.0 + 2.0 * i / nx),
+                                                   static_cast<float>(-1.0 + 2.0 * j / ny), 0.0f});
+  auto vertex = [&](int i, int j) { return static_cast<std::uint32_t>(j * (nx + 1) + i); };
   for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      float x0 = gx(i), x1 = gx(i + 1), y0 = gy(j), y1 = gy(j + 1);
-      const float tris[2][9] = {{x0, y0, 0, x1, y0, 0, x1, y1, 0}, {x0, y0, 0, x1, y1, 0, x0, y1, 0}};
-      for (const auto& t : tris) {
-        ObjectGpu o{};
-        o.type = OBJECT_TRIANGLE;
-        std::copy(t, t + 9, o.p);
-        gpu.objects.push_back(o);
-      }
-    }
-  REQUIRE(gpu.objects.size() >= 999000);
+    for (int i = 0; i < nx; ++i)
+      grid.indices.insert(grid.indices.end(), {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j),
+                                               vertex(i + 1, j + 1), vertex(i, j + 1)});
+  GpuScene gpu;
+  static_cast<SceneGeometry&>(gpu) = geometryFromMesh(grid);
+  REQUIRE(gpu.primitive_count >= 999000);
+  REQUIRE(gpu.triangleCount() == gpu.primitive_count);
   CameraBasis b = cameraBasis(camera, width, height);
   auto put = [](float* dst, const Vec3& v) {
     dst[0] = static_cast<float>(v.x);
@@ -290,11 +289,10 @@ TEST_CASE("first hits on a million triangles match the closed form", "[firsthit]
   gpu.camera.height = height;
   gpu.camera.spp = 1;
 
-  gpu.primitive_count = gpu.objects.size();
   std::vector<float> xy = samplePoints(width, height, 1, 9);
   FirstHitStats stats = passStats(gpu, xy);
   INFO(stats.pairs << " pairs");
-  CHECK(stats.pairs < 2 * gpu.objects.size());  // small triangles touch few blocks
+  CHECK(stats.pairs < 2 * gpu.primitive_count);  // small triangles touch few blocks
   CHECK(stats.others == 0);
   std::vector<HitGpu> hits = firstHits(sharedContext(), gpu, xy);
   // The closed form, in double from the float camera: skip samples within 1e-3

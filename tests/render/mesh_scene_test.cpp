@@ -129,7 +129,8 @@ TEST_CASE("the same mesh as OBJ, PLY (ascii and binary) and OFF renders identica
   fs::remove_all(dir);
 }
 
-TEST_CASE("objects naming one mesh file share it and number their triangles in object order", "[render][mesh]") {
+TEST_CASE("objects naming one mesh file share it, analytic objects number first, then each mesh's triangles",
+          "[render][mesh]") {
   SmallMesh m = icosphere();
   fs::path dir = scratch();
   writeObj(m, dir / "ico.obj");
@@ -151,17 +152,25 @@ TEST_CASE("objects naming one mesh file share it and number their triangles in o
   CHECK(scene.objects[1].material_override);
   GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
   const size_t n = m.f.size();
-  REQUIRE(gpu.objects.size() == 2 * n + 1);
-  CHECK(gpu.objects[2 * n].type == OBJECT_SPHERE);
-  CHECK(gpu.objects[n].material == 1);  // "red", for every triangle of the second copy
-  CHECK(gpu.objects[0].material == 0);
+  // The sphere, the two copies' triangles (compact on the device), their two headers.
+  REQUIRE(gpu.primitive_count == 2 * n + 1);
+  REQUIRE(gpu.triangle_base == 1);
+  REQUIRE(gpu.mesh_count == 2);
+  REQUIRE(gpu.objects.size() == 2 * n + 3);
+  CHECK(gpu.triangles.size() == 6 * n);
+  CHECK(gpu.objects[0].type == OBJECT_SPHERE);
+  CHECK(gpu.objects[1 + n].material == 1);  // "red", for every triangle of the second copy
+  CHECK(gpu.objects[1].material == 0);
+  CHECK(gpu.objects[1 + 2 * n].type == OBJECT_MESH);
+  // The device keeps no record per triangle: the sphere and the headers only.
+  CHECK(deviceRecords(gpu).size() == 3);
 
   RenderResult r = test::sharedRenderer().render(scene, RenderOptions::fromScene(scene));
-  // Left third: the first copy (ids 0..n-1); right third: the second (n..2n-1); centre: the sphere.
+  // Left third: the first copy (ids 1..n); right third: the second (n+1..2n); centre: the sphere.
   auto id = [&](int i, int j) { return r.primid[static_cast<size_t>(j) * r.width + i]; };
-  CHECK((id(10, 16) >= 0 && id(10, 16) < int(n)));
-  CHECK((id(37, 16) >= int(n) && id(37, 16) < int(2 * n)));
-  CHECK(id(24, 16) == int(2 * n));
+  CHECK((id(10, 16) >= 1 && id(10, 16) <= int(n)));
+  CHECK((id(37, 16) > int(n) && id(37, 16) <= int(2 * n)));
+  CHECK(id(24, 16) == 0);
   fs::remove_all(dir);
 }
 
