@@ -94,6 +94,7 @@ std::vector<double> interleavedMedians(int repeats, const std::vector<std::funct
 // Embree or one of prism's structures, answering the same rays.
 struct Contender {
   BenchRow row;
+  const DeviceAccel* accel = nullptr;  // prism's structure (null for Embree)
   std::function<double()> rebuild;  // builds the structure again, returns the build's seconds
   std::function<std::vector<HitGpu>(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*)> intersect;
   std::function<void(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*)> occluded;
@@ -114,6 +115,7 @@ long structureColour(const std::string& s) {
   if (s == "octree") return 0xD55E00;
   if (s == "bsp") return 0x009E73;
   if (s == "none") return 0xCC79A7;
+  if (s == "bvh-kdop") return 0x56B4E9;
   return 0x000000;
 }
 
@@ -218,14 +220,20 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     }
 #endif
     std::vector<std::unique_ptr<RayQueryEngine>> engines;
-    for (AccelKind kind : options.structures) {
-      engines.push_back(std::make_unique<RayQueryEngine>(context, scene.geometry, kind));
+    std::vector<std::pair<AccelKind, bool>> variants;  // (structure, k-DOP bounds)
+    for (AccelKind kind : options.structures) variants.emplace_back(kind, false);
+    if (options.bvh_kdop) variants.emplace_back(AccelKind::Bvh, true);
+    for (const auto& [kind, kdop] : variants) {
+      AccelBuildOptions build;
+      build.bvh_kdop = kdop;
+      engines.push_back(std::make_unique<RayQueryEngine>(context, scene.geometry, kind, std::vector<MaterialGpu>{}, build));
       RayQueryEngine* engine = engines.back().get();
       const AccelStats& st = engine->accel().stats;
       Contender c;
-      c.row.structure = accelName(kind);
+      c.accel = &engine->accel();
+      c.row.structure = kdop ? "bvh-kdop" : accelName(kind);
       c.row.build_seconds = st.build_seconds;
-      c.rebuild = [&scene, kind] { return buildAccel(kind, scene.geometry.objects)->stats.build_seconds; };
+      c.rebuild = [&scene, kind = kind, build] { return buildAccel(kind, scene.geometry.objects, build)->stats.build_seconds; };
       c.row.bytes_per_triangle =
           scene.geometry.primitive_count == 0 ? kNaN : double(engine->deviceBytes()) / scene.geometry.primitive_count;
       c.row.nodes = static_cast<double>(st.node_count);
@@ -263,6 +271,17 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       if (c.row.structure != "embree") c.row.agreement = agreementPercent(reference_hits, hits);
     }
     const std::vector<QueryRay> shadows = shadowRays(primary, reference_hits, light);
+    {
+      double s;
+      const std::vector<HitGpu> random_hits = contenders.front().intersect(random, random_gpu, &s);
+      for (Contender& c : contenders) {
+        if (!c.accel) continue;
+        const BvhVisits p = bvhNodeVisits(*c.accel, primary, reference_hits);
+        const BvhVisits r = bvhNodeVisits(*c.accel, random, random_hits);
+        c.row.visits_primary = p.inner + p.leaves;
+        c.row.visits_random = r.inner + r.leaves;
+      }
+    }
     const std::vector<RayGpu> shadows_gpu = toRayGpu(shadows);
 
     auto timeAll = [&](const std::vector<QueryRay>& rays, const std::vector<RayGpu>& rays_gpu, bool occlusion) {

@@ -35,8 +35,9 @@ std::ofstream openOut(const std::string& path) {
 
 void printTableHeader(std::ostream& out) {
   char line[512];
-  std::snprintf(line, sizeof line, "%-26s %9s %-7s %9s %7s %9s %9s %6s %7s %5s %8s %8s %8s %6s %6s %6s %6s %7s\n",
-                "scene", "tris", "accel", "build s", "B/tri", "nodes", "leaves", "p/leaf", "SAH", "dup",
+  std::snprintf(line, sizeof line,
+                "%-26s %9s %-8s %9s %7s %9s %9s %6s %7s %5s %6s %6s %8s %8s %8s %6s %6s %6s %6s %7s\n", "scene",
+                "tris", "accel", "build s", "B/tri", "nodes", "leaves", "p/leaf", "SAH", "dup", "vis/p", "vis/r",
                 "prim Mr/s", "shad Mr/s", "rand Mr/s", "xEprim", "xEshad", "xErand", "xEbld", "agree%");
   out << line;
 }
@@ -44,10 +45,12 @@ void printTableHeader(std::ostream& out) {
 void printTableRow(std::ostream& out, const BenchRow& r) {
   std::string scene = r.scene.size() > 26 ? "..." + r.scene.substr(r.scene.size() - 23) : r.scene;
   char line[512];
-  std::snprintf(line, sizeof line, "%-26s %9zu %-7s %9s %7s %9s %9s %6s %7s %5s %8s %8s %8s %6s %6s %6s %6s %7s\n",
+  std::snprintf(line, sizeof line,
+                "%-26s %9zu %-8s %9s %7s %9s %9s %6s %7s %5s %6s %6s %8s %8s %8s %6s %6s %6s %6s %7s\n",
                 scene.c_str(), r.triangles, r.structure.c_str(), num(r.build_seconds, "%.4f").c_str(),
                 num(r.bytes_per_triangle, "%.1f").c_str(), num(r.nodes, "%.0f").c_str(), num(r.leaves, "%.0f").c_str(),
                 num(r.prims_per_leaf, "%.2f").c_str(), num(r.sah, "%.1f").c_str(), num(r.duplication, "%.2f").c_str(),
+                num(r.visits_primary, "%.1f").c_str(), num(r.visits_random, "%.1f").c_str(),
                 num(r.primary_mrays, "%.2f").c_str(), num(r.shadow_mrays, "%.2f").c_str(),
                 num(r.random_mrays, "%.2f").c_str(), num(r.primary_ratio, "%.2f").c_str(),
                 num(r.shadow_ratio, "%.2f").c_str(), num(r.random_ratio, "%.2f").c_str(),
@@ -59,14 +62,15 @@ void writeCsv(const std::string& path, const std::vector<BenchRow>& rows) {
   std::ofstream f = openOut(path);
   f << "scene,triangles,structure,build_seconds,bytes_per_triangle,nodes,leaves,prims_per_leaf,sah_cost,"
        "duplication,primary_mrays,shadow_mrays,random_mrays,primary_vs_embree,shadow_vs_embree,random_vs_embree,"
-       "build_time_vs_embree,agreement_percent\n";
+       "build_time_vs_embree,agreement_percent,visits_per_primary_ray,visits_per_random_ray\n";
   for (const BenchRow& r : rows) {
     auto v = [](double x) { return std::isfinite(x) ? num(x, "%.6g") : std::string(); };
     f << csvField(r.scene) << ',' << r.triangles << ',' << r.structure << ',' << v(r.build_seconds) << ','
       << v(r.bytes_per_triangle) << ',' << v(r.nodes) << ',' << v(r.leaves) << ',' << v(r.prims_per_leaf) << ','
       << v(r.sah) << ',' << v(r.duplication) << ',' << v(r.primary_mrays) << ',' << v(r.shadow_mrays) << ','
       << v(r.random_mrays) << ',' << v(r.primary_ratio) << ',' << v(r.shadow_ratio) << ',' << v(r.random_ratio)
-      << ',' << v(r.build_ratio) << ',' << v(r.agreement) << '\n';
+      << ',' << v(r.build_ratio) << ',' << v(r.agreement) << ',' << v(r.visits_primary) << ','
+      << v(r.visits_random) << '\n';
   }
   if (!f) throw std::runtime_error(path + ": write failed");
 }
@@ -91,6 +95,8 @@ void writeJson(const std::string& path, const BenchMeta& meta, const std::vector
                          {"prims_per_leaf", jsonNumber(r.prims_per_leaf)},
                          {"sah_cost", jsonNumber(r.sah)},
                          {"duplication", jsonNumber(r.duplication)},
+                         {"visits_per_primary_ray", jsonNumber(r.visits_primary)},
+                         {"visits_per_random_ray", jsonNumber(r.visits_random)},
                          {"primary_mrays", jsonNumber(r.primary_mrays)},
                          {"shadow_mrays", jsonNumber(r.shadow_mrays)},
                          {"random_mrays", jsonNumber(r.random_mrays)},

@@ -25,6 +25,9 @@ struct BenchRow {
   // than Embree) and build-time ratio (> 1 slower than Embree).
   double primary_ratio = kNaN, shadow_ratio = kNaN, random_ratio = kNaN, build_ratio = kNaN;
   double agreement = kNaN;  // % of primary rays with the same primitive as Embree (or as the BVH)
+  // BVH rows: wide nodes and leaves per ray whose bounds meet the ray before
+  // its closest hit (workloads' bvhNodeVisits), camera and random rays.
+  double visits_primary = kNaN, visits_random = kNaN;
 };
 
 struct BenchMeta {

@@ -41,7 +41,8 @@ const char* kUsage =
     "options:\n"
     "  --device D          OpenCL device: index, cpu, gpu or a name substring\n"
     "  --sizes N,...       generated tori of about N triangles each (k and M suffixes allowed)\n"
-    "  --structures LIST   comma-separated among bvh, octree, bsp, none (default bvh,octree,bsp)\n"
+    "  --structures LIST   comma-separated among bvh, bvh-kdop (the BVH with \"set of normals\"\n"
+    "                      bounds), octree, bsp, none (default bvh,octree,bsp)\n"
     "  --out DIR           where accel.csv, accel.json and the PNG plots go (default bench-out)\n"
     "  --camera N          N x N primary rays (default 1024)\n"
     "  --random N          incoherent random rays (default 1048576)\n"
@@ -144,9 +145,12 @@ int main(int argc, char** argv) {
       options.structures.clear();
       for (const std::string& s : splitList(value())) {
         prism::AccelKind kind;
-        if (!prism::tryParseAccelKind(s, &kind))
-          usageError("--structures: unknown structure '" + s + "' (expected bvh, octree, bsp or none)");
-        options.structures.push_back(kind);
+        if (s == "bvh-kdop")
+          options.bvh_kdop = true;
+        else if (!prism::tryParseAccelKind(s, &kind))
+          usageError("--structures: unknown structure '" + s + "' (expected bvh, bvh-kdop, octree, bsp or none)");
+        else
+          options.structures.push_back(kind);
       }
     } else if (a == "--out") {
       options.out_dir = value();

@@ -401,9 +401,16 @@ typedef enum PrismShadows {
   PRISM_SHADOWS_LIGHTBUFFER = 2
 } PrismShadows;
 
+/* What bounds the BVH's children: their axis-aligned boxes, or their boxes and
+ * slabs along four diagonals too ("set of normals" bounds, Kay and Kajiya; a
+ * 14-sided polytope that hugs slanted geometry closer). The same image either
+ * way; the other structures' cells are boxes whatever this says. */
+typedef enum PrismBounds { PRISM_BOUNDS_AABB = 0, PRISM_BOUNDS_KDOP = 1 } PrismBounds;
+
 /* Parse a lower-case name ("auto", "none", "grid", "quincunx", "adaptive", "jitter",
  * "poisson", "random"; "box", "tent", "gaussian", "mitchell"; "auto", "zbuffer",
- * "trace"; "crossing", "radial", "left-right"; "auto", "accel", "lightbuffer");
+ * "trace"; "crossing", "radial", "left-right"; "auto", "accel", "lightbuffer";
+ * "aabb", "kdop");
  * the Name functions return it, or NULL for an unknown value. */
 PRISM_API PrismStatus prismParseAa(const char* name, PrismAa* aa);
 PRISM_API const char* prismAaName(PrismAa aa);
@@ -415,6 +422,8 @@ PRISM_API PrismStatus prismParseInsideTest(const char* name, PrismInsideTest* in
 PRISM_API const char* prismInsideTestName(PrismInsideTest inside_test);
 PRISM_API PrismStatus prismParseShadows(const char* name, PrismShadows* shadows);
 PRISM_API const char* prismShadowsName(PrismShadows shadows);
+PRISM_API PrismStatus prismParseBounds(const char* name, PrismBounds* bounds);
+PRISM_API const char* prismBoundsName(PrismBounds bounds);
 
 typedef struct PrismRenderOptions {
   size_t struct_size;  /* sizeof(PrismRenderOptions); set by prismGetRenderOptions */
@@ -433,6 +442,7 @@ typedef struct PrismRenderOptions {
   uint32_t profile;    /* nonzero: time each kernel on the device (prismGetKernelTime); 0 by default */
   uint32_t inside_test; /* a PrismInsideTest: for polygons that name none */
   uint32_t shadows;     /* a PrismShadows: point lights' feelers */
+  uint32_t bounds;      /* a PrismBounds: the BVH children's bounds */
 } PrismRenderOptions;
 
 /* Fills `options` with the scene's own settings (film and render blocks). */

@@ -10,6 +10,8 @@
 #include <string>
 #include <utility>
 
+#include "accel/kdop_bounds.h"
+#include "kernels/shared/bvh_node_gpu.h"
 #include "render/gpu_scene.h"
 
 namespace prism {
@@ -146,6 +148,61 @@ Aabb boundsOf(const std::vector<ObjectGpu>& objects) {
     if (objectBounds(objects[i], &b)) box.extend(b);
   }
   return box;
+}
+
+namespace {
+
+// The part of [t0, t1] where lo <= o + t d <= hi (along one axis or one
+// diagonal, o and d projected on it), in double; false when none is left.
+bool clipSlab(double lo, double hi, double o, double d, double& t0, double& t1) {
+  if (d == 0) return lo <= o && o <= hi;
+  double a = (lo - o) / d, b = (hi - o) / d;
+  if (a > b) std::swap(a, b);
+  t0 = std::max(t0, a);
+  t1 = std::min(t1, b);
+  return t0 <= t1;
+}
+
+}  // namespace
+
+BvhVisits bvhNodeVisits(const DeviceAccel& accel, const std::vector<QueryRay>& rays, const std::vector<HitGpu>& hits) {
+  const std::string& options = accel.kernel_options;
+  if (accel.kind != AccelKind::Bvh || options.find("-DPRISM_BVH_MOTION") != std::string::npos || rays.empty())
+    return {NAN, NAN};
+  const bool kdop = options.find("-DPRISM_BVH_KDOP") != std::string::npos;
+  const std::size_t node_floats = (7 + (kdop ? 8 : 0)) * 8;  // float8 words of a node (kernels/accel/bvh.h)
+  const float* nodes = accel.nodes.size() > 2 ? accel.nodes[2].v : nullptr;
+  BvhVisits sum;
+  std::vector<int> stack;
+  for (std::size_t r = 0; r < rays.size(); ++r) {
+    const QueryRay& q = rays[r];
+    const double o[3] = {q.ox, q.oy, q.oz}, d[3] = {q.dx, q.dy, q.dz};
+    const double t_end = hits[r].prim >= 0 ? hits[r].t : q.tmax;
+    stack.assign(1, 0);
+    while (nodes && !stack.empty()) {
+      const float* n = nodes + node_floats * static_cast<std::size_t>(stack.back());
+      stack.pop_back();
+      sum.inner += 1;
+      for (int i = 0; i < BVH_WIDTH; ++i) {
+        int child;
+        std::memcpy(&child, n + 48 + i, sizeof child);
+        if (child == 0) continue;
+        double t0 = q.tmin, t1 = t_end;
+        bool meets = true;
+        for (int a = 0; a < 3 && meets; ++a) meets = clipSlab(n[16 * a + i], n[16 * a + 8 + i], o[a], d[a], t0, t1);
+        for (int j = 0; kdop && j < BVH_KDOP_DIAGONALS && meets; ++j) {
+          const float* k = n + 56 + 16 * j;
+          meets = clipSlab(k[i], k[8 + i], diagonalDot(j, o[0], o[1], o[2]), diagonalDot(j, d[0], d[1], d[2]), t0, t1);
+        }
+        if (!meets) continue;
+        if (child > 0)
+          stack.push_back(child);
+        else
+          sum.leaves += 1;
+      }
+    }
+  }
+  return {sum.inner / rays.size(), sum.leaves / rays.size()};
 }
 
 std::vector<QueryRay> cameraRays(const Aabb& box, int width, int height) {

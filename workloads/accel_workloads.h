@@ -37,6 +37,16 @@ TriangleMesh triangleSoup(std::size_t count, std::uint64_t seed, float size);
 // like a scanned model, at any size): a grid of nu x nv quads, two triangles each.
 TriangleMesh bumpyTorus(std::size_t triangles);
 
+// Node visits of a BVH (buildAccel's flattened 8-wide nodes, with or without
+// k-DOP bounds; not over moving primitives): per ray, the inner nodes and the
+// leaves whose bounds meet the ray between tmin and its closest hit (tmax on a
+// miss) in exact arithmetic, which every traversal order must visit to
+// confirm that hit. Means over the rays; NaN for a structure that is no such BVH.
+struct BvhVisits {
+  double inner = 0, leaves = 0;
+};
+BvhVisits bvhNodeVisits(const DeviceAccel& accel, const std::vector<QueryRay>& rays, const std::vector<HitGpu>& hits);
+
 // Box of the bounded objects (planes ignored).
 Aabb boundsOf(const std::vector<ObjectGpu>& objects);
 

@@ -94,6 +94,9 @@ struct AccelBuildOptions {
   // and close, interpolated per ray); false keeps only the swept boxes, which
   // prism-bench distributed compares against.
   bool bvh_linear_bounds = true;
+  // BVH: children bounded by "set of normals" slabs along the four diagonals
+  // as well as by their boxes (kdop_bounds.h); the render option `bounds`.
+  bool bvh_kdop = false;
 };
 
 // Scenes of at most this many primitives are traced by brute force under

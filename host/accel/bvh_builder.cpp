@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "accel/builders.h"
+#include "accel/kdop_bounds.h"
 #include "accel/leaf_packets.h"
 #include "accel/task_group.h"
 #include "kernels/shared/bvh_node_gpu.h"
@@ -225,13 +226,42 @@ MotionBoxes nodeMotionBoxes(const PrimitiveSet& prims, const std::vector<Node2>&
   return m;
 }
 
+// The diagonal slabs of every binary node (kdop_bounds.h), children first.
+std::vector<DiagonalSlabs> nodeDiagonalSlabs(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims,
+                                             const std::vector<Node2>& nodes, const std::vector<PrimRef>& refs) {
+  std::vector<DiagonalSlabs> slabs(nodes.size(), DiagonalSlabs::empty());
+  std::vector<std::pair<int, bool>> todo{{0, false}};
+  while (!todo.empty()) {
+    auto [node, children_done] = todo.back();
+    todo.pop_back();
+    const Node2& n = nodes[node];
+    if (n.left < 0) {
+      for (int i = 0; i < n.count; ++i) {
+        const PrimRef& r = refs[n.first + i];
+        slabs[node].extend(primitiveDiagonalSlabs(objects[r.id], prims.bounds[r.index]));
+      }
+    } else if (!children_done) {
+      todo.push_back({node, true});
+      todo.push_back({n.left, false});
+      todo.push_back({n.right, false});
+    } else {
+      slabs[node].extend(slabs[n.left]);
+      slabs[node].extend(slabs[n.right]);
+    }
+  }
+  return slabs;
+}
+
 class WideFlattener {
  public:
   // `motion`: the nodes' linear bounds, for a tree over moving primitives (nodes
   // then carry their children's boxes at shutter open and at close); else null.
+  // `kdop`: every binary node's diagonal slabs, for a tree whose nodes carry
+  // them; else null.
   WideFlattener(const std::vector<ObjectGpu>& objects, const std::vector<Node2>& nodes,
-                const std::vector<PrimRef>& refs, const MotionBoxes* motion, DeviceAccel& out)
-      : m_objects(objects), m_nodes(nodes), m_refs(refs), m_motion(motion), m_out(out) {
+                const std::vector<PrimRef>& refs, const MotionBoxes* motion, const std::vector<DiagonalSlabs>* kdop,
+                DeviceAccel& out)
+      : m_objects(objects), m_nodes(nodes), m_refs(refs), m_motion(motion), m_kdop(kdop), m_out(out) {
     m_ids.reserve(kMaxLeafPrims);
   }
 
@@ -255,14 +285,16 @@ class WideFlattener {
     s.sah_cost = m_sah;
     s.max_depth = m_stats.max_depth;
     m_out.kernel_options = "-DPRISM_ACCEL_BVH " + stackOption(m_max_stack + 1);
-    if (!m_motion) {
+    if (m_motion) m_out.kernel_options += " -DPRISM_BVH_MOTION";
+    if (m_kdop) m_out.kernel_options += " -DPRISM_BVH_KDOP";
+    if (!m_motion && !m_kdop) {
       appendNodeWords(m_out.nodes, m_wide.data(), m_wide.size());
       return;
     }
-    m_out.kernel_options += " -DPRISM_BVH_MOTION";
     for (std::size_t i = 0; i < m_wide.size(); ++i) {
       appendNodeWords(m_out.nodes, &m_wide[i], 1);
-      appendNodeWords(m_out.nodes, &m_close[i], 1);
+      if (m_motion) appendNodeWords(m_out.nodes, &m_close[i], 1);
+      if (m_kdop) appendNodeWords(m_out.nodes, &m_slabs[i], 1);
     }
   }
 
@@ -293,10 +325,23 @@ class WideFlattener {
   // kernel's lerp of inf and inf would be NaN, which fmin/fmax then ignore.
   void pushNode() {
     m_wide.push_back(emptyNode());
+    if (m_kdop) {
+      BvhKdopGpu k;
+      const DiagonalSlabs none = DiagonalSlabs::empty();
+      for (int slot = 0; slot < BVH_WIDTH; ++slot) putSlabs(k, slot, none);
+      m_slabs.push_back(k);
+    }
     if (!m_motion) return;
     invertSlots(m_wide.back(), FLT_MAX);
     m_close.emplace_back();
     invertSlots(m_close.back(), FLT_MAX);
+  }
+
+  static void putSlabs(BvhKdopGpu& k, int slot, const DiagonalSlabs& s) {
+    for (int j = 0; j < BVH_KDOP_DIAGONALS; ++j) {
+      k.slab[2 * j][slot] = s.lo[j];
+      k.slab[2 * j + 1][slot] = s.hi[j];
+    }
   }
 
   static BvhNodeGpu emptyNode() {
@@ -326,6 +371,7 @@ class WideFlattener {
     putBox(m_wide[wide], slot, m_motion ? m_motion->open[node2] : c.box);
     m_wide[wide].child[slot] = code;
     if (m_motion) putBox(m_close[wide], slot, m_motion->close[node2]);
+    if (m_kdop) putSlabs(m_slabs[wide], slot, (*m_kdop)[node2]);
   }
 
   int flatten(int node2, int depth, int stack) {
@@ -358,9 +404,11 @@ class WideFlattener {
   const std::vector<Node2>& m_nodes;
   const std::vector<PrimRef>& m_refs;
   const MotionBoxes* m_motion;
+  const std::vector<DiagonalSlabs>* m_kdop;
   DeviceAccel& m_out;
   std::vector<BvhNodeGpu> m_wide;
   std::vector<BvhMotionBoundsGpu> m_close;  // m_wide[i]'s children at shutter close
+  std::vector<BvhKdopGpu> m_slabs;          // m_wide[i]'s children's diagonal slabs
   std::vector<std::int32_t> m_ids;
   AccelStats m_stats;
   std::size_t m_leaves = 0;
@@ -398,7 +446,10 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
     out.nodes[0].v[3] = prims.shutter_open;
     out.nodes[1].v[3] = prims.shutter_close;
   }
-  WideFlattener(objects, nodes, refs, moving ? &motion : nullptr, out).run(prims.scene.area());
+  std::vector<DiagonalSlabs> slabs;
+  if (options.bvh_kdop && !nodes.empty()) slabs = nodeDiagonalSlabs(objects, prims, nodes, refs);
+  WideFlattener(objects, nodes, refs, moving ? &motion : nullptr, slabs.empty() ? nullptr : &slabs, out)
+      .run(prims.scene.area());
   out.stats.references = refs.size();
   out.stats.mean_prims_per_leaf = out.stats.leaf_count ? double(refs.size()) / out.stats.leaf_count : 0;
   out.stats.duplication = 1;

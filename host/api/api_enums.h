@@ -26,5 +26,7 @@ const char* firstHitNameOf(std::int64_t value);
 const char* insideTestNameOf(std::int64_t value);
 // PrismShadows value, or NULL for a value that is none of them.
 const char* shadowsNameOf(std::int64_t value);
+// PrismBounds value, or NULL for a value that is none of them.
+const char* boundsNameOf(std::int64_t value);
 // The channels of a PrismAov value; false for a value that is none.
 bool aovChannelsOf(std::int64_t value, std::uint32_t* channels);

@@ -91,6 +91,9 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   const char* shadows = shadowsNameOf(o.shadows);
   if (!shadows) throw std::invalid_argument("render options: unknown shadows value " + std::to_string(o.shadows));
   r.shadows = parseShadowMode(shadows);
+  const char* bounds = boundsNameOf(o.bounds);
+  if (!bounds || !tryParseBoundsKind(bounds, &r.bounds))
+    throw std::invalid_argument("render options: unknown bounds value " + std::to_string(o.bounds));
   r.aa_threshold = o.aa_threshold;
   r.aa_max_level = static_cast<int>(std::min<uint32_t>(o.aa_max_level, std::numeric_limits<int>::max()));
   r.profile = o.profile != 0;
@@ -297,6 +300,9 @@ PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions
   PrismShadows shadows = PRISM_SHADOWS_AUTO;
   prismParseShadows(shadowModeName(r.shadows), &shadows);
   options->shadows = shadows;
+  PrismBounds bounds = PRISM_BOUNDS_AABB;
+  prismParseBounds(boundsKindName(r.bounds), &bounds);
+  options->bounds = bounds;
   options->aa_threshold = static_cast<float>(r.aa_threshold);
   options->aa_max_level = static_cast<uint32_t>(r.aa_max_level);
   return PRISM_OK;

@@ -29,6 +29,7 @@ const Named<PrismFirstHit> kFirstHitNames[] = {
     {"auto", PRISM_FIRST_HIT_AUTO}, {"zbuffer", PRISM_FIRST_HIT_ZBUFFER}, {"trace", PRISM_FIRST_HIT_TRACE}};
 const Named<PrismShadows> kShadowsNames[] = {
     {"auto", PRISM_SHADOWS_AUTO}, {"accel", PRISM_SHADOWS_ACCEL}, {"lightbuffer", PRISM_SHADOWS_LIGHTBUFFER}};
+const Named<PrismBounds> kBoundsNames[] = {{"aabb", PRISM_BOUNDS_AABB}, {"kdop", PRISM_BOUNDS_KDOP}};
 const Named<PrismInsideTest> kInsideTestTable[] = {
     {"crossing", PRISM_INSIDE_CROSSING}, {"radial", PRISM_INSIDE_RADIAL}, {"left-right", PRISM_INSIDE_LEFT_RIGHT}};
 
@@ -60,6 +61,7 @@ const char* filterNameOf(std::int64_t value) { return nameOf(kFilterNames, value
 const char* firstHitNameOf(std::int64_t value) { return nameOf(kFirstHitNames, value); }
 const char* insideTestNameOf(std::int64_t value) { return nameOf(kInsideTestTable, value); }
 const char* shadowsNameOf(std::int64_t value) { return nameOf(kShadowsNames, value); }
+const char* boundsNameOf(std::int64_t value) { return nameOf(kBoundsNames, value); }
 
 extern "C" {
 
@@ -88,5 +90,9 @@ PRISM_API PrismStatus prismParseShadows(const char* name, PrismShadows* shadows)
   return parse(kShadowsNames, "prismParseShadows", "shadow mode", name, shadows);
 }
 PRISM_API const char* prismShadowsName(PrismShadows shadows) { return shadowsNameOf(enumValue(shadows)); }
+PRISM_API PrismStatus prismParseBounds(const char* name, PrismBounds* bounds) {
+  return parse(kBoundsNames, "prismParseBounds", "bounds", name, bounds);
+}
+PRISM_API const char* prismBoundsName(PrismBounds bounds) { return boundsNameOf(enumValue(bounds)); }
 
 }  // extern "C"

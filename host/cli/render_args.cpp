@@ -18,7 +18,7 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--focus-distance", "", true}, {"--stats", "", false},
     {"--aa", "", true},        {"--filter", "", true},    {"--aa-threshold", "", true},
     {"--aa-max-level", "", true}, {"--first-hit", "", true}, {"--inside-test", "", true},
-    {"--shadows", "", true},
+    {"--shadows", "", true},   {"--bounds", "", true},
 };
 
 // The same list as the library's image writer, checked here so that a typo in -o
@@ -130,6 +130,12 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
     if (prismParseShadows(name->c_str(), &shadows) != PRISM_OK)
       throw UsageError("--shadows: unknown mode '" + *name + "' (expected auto, accel or lightbuffer)");
     request.shadows = shadows;
+  }
+  if (const auto name = parsed.text("--bounds")) {
+    PrismBounds bounds;
+    if (prismParseBounds(name->c_str(), &bounds) != PRISM_OK)
+      throw UsageError("--bounds: unknown bounds '" + *name + "' (expected aabb or kdop)");
+    request.bounds = bounds;
   }
   request.camera_pos = parsed.triple("--camera-pos");
   request.camera_look = parsed.triple("--camera-look");

@@ -30,6 +30,7 @@ struct RenderRequest {
   std::optional<PrismFirstHit> first_hit;
   std::optional<PrismInsideTest> inside_test;
   std::optional<PrismShadows> shadows;
+  std::optional<PrismBounds> bounds;
   std::optional<std::array<float, 3>> camera_pos, camera_look, camera_up;
   std::optional<float> fov;
   std::optional<float> aperture, focus_distance;  // depth of field: lens radius, plane in focus

@@ -69,6 +69,7 @@ std::vector<Override> overridesOf(const RenderRequest& request) {
   add(r.first_hit.has_value(), "--first-hit", [&r](PrismRenderOptions& o) { o.first_hit = *r.first_hit; });
   add(r.inside_test.has_value(), "--inside-test", [&r](PrismRenderOptions& o) { o.inside_test = *r.inside_test; });
   add(r.shadows.has_value(), "--shadows", [&r](PrismRenderOptions& o) { o.shadows = *r.shadows; });
+  add(r.bounds.has_value(), "--bounds", [&r](PrismRenderOptions& o) { o.bounds = *r.bounds; });
   add(r.stats, "--stats", [](PrismRenderOptions& o) { o.profile = 1; });
   return out;
 }
@@ -190,7 +191,11 @@ void printSummary(const RenderRequest& request, const PrismRenderOptions& option
   // Throughput over tracing alone: set-up (kernels built on a cold start, the
   // structure, uploads) is reported apart from it.
   const double mrays = stats.trace_seconds > 0.0 ? static_cast<double>(total) / stats.trace_seconds / 1e6 : 0.0;
-  const char* accel = prismAccelName(static_cast<PrismAccel>(stats.accel));
+  const char* accel_name = prismAccelName(static_cast<PrismAccel>(stats.accel));
+  const std::string accel = !accel_name                                                 ? "?"
+                            : stats.accel == PRISM_ACCEL_BVH && options.bounds == PRISM_BOUNDS_KDOP
+                                ? std::string(accel_name) + " (k-DOP bounds)"
+                                : std::string(accel_name);
   const char* first_hit = prismFirstHitName(static_cast<PrismFirstHit>(stats.first_hit_used));
   const char* shadows = prismShadowsName(static_cast<PrismShadows>(stats.shadows_used));
   std::printf(
@@ -198,7 +203,7 @@ void printSummary(const RenderRequest& request, const PrismRenderOptions& option
       "%s, %.3f rays/pixel, first hit by %s, shadows by %s, set-up %.2f s, tracing %.2f s; "
       "%llu primary, %llu reflected, %llu refracted, %llu shadow rays, %.2f Mrays/s -> %s\n",
       static_cast<unsigned>(options.width), static_cast<unsigned>(options.height),
-      static_cast<unsigned>(options.spp), device.name, accel ? accel : "?", stats.accel_build_seconds,
+      static_cast<unsigned>(options.spp), device.name, accel.c_str(), stats.accel_build_seconds,
       stats.seconds, stats.kernel_build_seconds, samplingText(options).c_str(), stats.rays_per_pixel,
       first_hit ? first_hit : "?", shadows ? shadows : "?", stats.setup_seconds, stats.trace_seconds,
       static_cast<unsigned long long>(stats.primary_rays),

@@ -59,6 +59,8 @@ RenderOptions RenderOptions::fromScene(const Scene& scene) {
   o.aa_max_level = scene.film.aa_max_level;
   o.first_hit = parseFirstHitMode(scene.render.first_hit);
   o.shadows = parseShadowMode(scene.render.shadows);
+  if (!tryParseBoundsKind(scene.render.bounds, &o.bounds))
+    throw std::invalid_argument("unknown bounds '" + scene.render.bounds + "' (expected " + kBoundsKindNames + ")");
   if (!tryParseInsideTest(scene.render.inside_test, &o.inside_test))
     throw std::invalid_argument("unknown inside test '" + scene.render.inside_test + "' (expected " +
                                 kInsideTestNames + ")");

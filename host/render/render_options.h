@@ -8,6 +8,7 @@
 
 #include "accel/accel_structure.h"
 #include "render/sampler.h"
+#include "scene/primitives/bounds_kind.h"
 #include "scene/primitives/inside_test.h"
 #include "scene/scene.h"
 
@@ -47,6 +48,7 @@ struct RenderOptions {
   FirstHitMode first_hit = FirstHitMode::Auto;
   InsideTest inside_test = InsideTest::Crossing;  // for polygons that name none
   ShadowMode shadows = ShadowMode::Auto;          // point lights' feelers
+  BoundsKind bounds = BoundsKind::Aabb;           // the BVH children's bounds
   // Time every kernel launch on the device (RenderStats::kernels); each launch
   // then keeps an event until the render ends.
   bool profile = false;

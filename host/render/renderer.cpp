@@ -126,7 +126,9 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_camera.write(&gpu.camera, sizeof(CameraGpu));
   m_geometry.upload(m_context, gpu);
   {
-    std::unique_ptr<DeviceAccel> accel = buildAccel(options.accel, gpu.objects, m_accel_build);
+    AccelBuildOptions build = m_accel_build;
+    build.bvh_kdop = options.bounds == BoundsKind::Kdop;
+    std::unique_ptr<DeviceAccel> accel = buildAccel(options.accel, gpu.objects, build);
     m_accel.upload(m_context, *accel);
     result.stats.accel = accel->kind;  // what auto chose
     result.stats.accel_stats = accel->stats;

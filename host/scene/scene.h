@@ -59,6 +59,7 @@ struct RenderSettings {
   std::string first_hit = "auto";  // primary visibility: auto, zbuffer or trace
   std::string inside_test = "crossing";  // polygons that name none: crossing, radial or left-right
   std::string shadows = "auto";  // point lights' feelers: auto, accel or lightbuffer
+  std::string bounds = "aabb";   // the BVH children's bounds: aabb or kdop
 };
 
 enum class LightType { Point = 0, Quad = 1, Disk = 2, Sphere = 3 };

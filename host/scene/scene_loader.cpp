@@ -18,6 +18,7 @@
 #include "scene/camera_check.h"
 #include "scene/json_reader.h"
 #include "scene/light_check.h"
+#include "scene/primitives/bounds_kind.h"
 #include "scene/primitives/inside_test.h"
 #include "scene/primitives/primitive_kind.h"
 #include "scene/mesh_objects.h"
@@ -184,7 +185,7 @@ class SceneParser : private JsonReader {
   void parseRender(const Json& v, const std::string& path) {
     checkObject(v, path,
                 {"max_depth", "min_weight", "ambient", "background", "seed", "accel", "first_hit", "inside_test",
-                 "shadows"});
+                 "shadows", "bounds"});
     RenderSettings& r = m_scene.render;
     if (const Json* p = find(v, "max_depth"))
       r.max_depth = int(integer(*p, member(path, "max_depth"), 0, kMaxDepth));
@@ -219,6 +220,13 @@ class SceneParser : private JsonReader {
       if (name != "auto" && name != "accel" && name != "lightbuffer")
         fail(member(path, "shadows"), "unknown shadow mode '" + name + "' (expected auto, accel, lightbuffer)");
       r.shadows = name;
+    }
+    if (const Json* p = find(v, "bounds")) {
+      const std::string name = string(*p, member(path, "bounds"), std::string("a string (") + kBoundsKindNames + ")");
+      BoundsKind kind;
+      if (!tryParseBoundsKind(name, &kind))
+        fail(member(path, "bounds"), "unknown bounds '" + name + "' (expected " + kBoundsKindNames + ")");
+      r.bounds = name;
     }
   }
 

@@ -11,12 +11,20 @@
 #include "shared/bvh_node_gpu.h"
 
 /* A node's size in float8 words: the node, then with moving primitives its
- * children's boxes at shutter close (shared/bvh_node_gpu.h). */
+ * children's boxes at shutter close, then with k-DOP bounds their diagonal
+ * slabs (shared/bvh_node_gpu.h). */
 #ifdef PRISM_BVH_MOTION
-#define BVH_NODE_WORDS 13
+#define BVH_MOTION_WORDS 6
 #else
-#define BVH_NODE_WORDS 7
+#define BVH_MOTION_WORDS 0
 #endif
+#ifdef PRISM_BVH_KDOP
+#define BVH_KDOP_WORDS 8
+#else
+#define BVH_KDOP_WORDS 0
+#endif
+#define BVH_KDOP_AT (7 + BVH_MOTION_WORDS)
+#define BVH_NODE_WORDS (7 + BVH_MOTION_WORDS + BVH_KDOP_WORDS)
 
 typedef struct BvhRay {
   float8 ox, oy, oz, ix, iy, iz;
@@ -24,14 +32,45 @@ typedef struct BvhRay {
 #ifdef PRISM_BVH_MOTION
   float8 s; /* the ray's time as a fraction of the shutter */
 #endif
+#ifdef PRISM_BVH_KDOP
+  /* Per diagonal j: 1 / (d.n_j), the offsets added to its near and far slab
+   * before that scaling (-o.n_j widened by a bound on its rounding), and the
+   * near slab's index (2j or 2j + 1; far is index ^ 1). */
+  float kinv[BVH_KDOP_DIAGONALS], knear[BVH_KDOP_DIAGONALS], kfar[BVH_KDOP_DIAGONALS];
+  int kn[BVH_KDOP_DIAGONALS];
+#endif
 } BvhRay;
 
-PRISM_HOT BvhRay bvh_ray(float3 o, float3 d, float time, __global const float4* header) {
+#ifdef PRISM_BVH_KDOP
+/* Diagonal j of the k-DOP's four, (1,1,1), (1,1,-1), (1,-1,1), (-1,1,1), dotted with v. */
+PRISM_HOT float bvh_diagonal_dot(int j, float3 v) {
+  return j == 0 ? v.x + v.y + v.z : j == 1 ? v.x + v.y - v.z : j == 2 ? v.x - v.y + v.z : -v.x + v.y + v.z;
+}
+#endif
+
+/* Fills *ray (not returned by value: a struct this size would come back
+ * through a hidden noalias pointer, whose inlining marks Oclgrind cannot read). */
+PRISM_HOT void bvh_ray(BvhRay* ray, float3 o, float3 d, float time, __global const float4* header) {
   float3 inv = accel_safe_rcp(d);
   BvhRay r;
 #ifdef PRISM_BVH_MOTION
   float open = header[0].w, close = header[1].w;
   r.s = (float8)(close > open ? clamp((time - open) / (close - open), 0.0f, 1.0f) : 0.0f);
+#endif
+#ifdef PRISM_BVH_KDOP
+  /* o.n_j is rounded twice, and a slab value less its projection loses what
+   * their magnitudes allow: widening each slab by 2^-20 of the origin's and
+   * the scene's magnitudes keeps the test conservative. */
+  float3 a = fabs(o), b = fmax(fabs(header[0].xyz), fabs(header[1].xyz));
+  float slack = ((a.x + a.y + a.z) + (b.x + b.y + b.z)) * 0x1p-20f;
+  for (int j = 0; j < BVH_KDOP_DIAGONALS; ++j) {
+    float dn = bvh_diagonal_dot(j, d), on = bvh_diagonal_dot(j, o);
+    float ki = 1.0f / (fabs(dn) < 1e-30f ? copysign(1e-30f, dn) : dn);
+    r.kinv[j] = ki;
+    r.kn[j] = 2 * j + (ki >= 0.0f ? 0 : 1);
+    r.knear[j] = -on + (ki >= 0.0f ? -slack : slack);
+    r.kfar[j] = -on + (ki >= 0.0f ? slack : -slack);
+  }
 #endif
   r.ox = (float8)(o.x);
   r.oy = (float8)(o.y);
@@ -42,7 +81,7 @@ PRISM_HOT BvhRay bvh_ray(float3 o, float3 d, float time, __global const float4* 
   r.nx = inv.x >= 0.0f ? 0 : 1;
   r.ny = inv.y >= 0.0f ? 2 : 3;
   r.nz = inv.z >= 0.0f ? 4 : 5;
-  return r;
+  *ray = r;
 }
 
 /* Bit i set when the ray meets child i's box within [tmin, tlimit]; entry
@@ -62,7 +101,15 @@ PRISM_HOT int bvh_node_mask(__global const float8* n, const BvhRay* r, float tmi
   float8 fy = (BVH_SLAB(r->ny ^ 1) - r->oy) * r->iy;
   float8 fz = (BVH_SLAB(r->nz ^ 1) - r->oz) * r->iz;
   float8 near_t = fmax(fmax(nx, ny), fmax(nz, (float8)(tmin)));
-  float8 far_t = fmin(fmin(fmin(fx, fy), fz), (float8)(tlimit)) * ACCEL_FAR_SCALE;
+  float8 far_t = fmin(fmin(fmin(fx, fy), fz), (float8)(tlimit));
+#ifdef PRISM_BVH_KDOP
+  __global const float8* k = n + BVH_KDOP_AT;
+  for (int j = 0; j < BVH_KDOP_DIAGONALS; ++j) {
+    near_t = fmax(near_t, (k[r->kn[j]] + r->knear[j]) * r->kinv[j]);
+    far_t = fmin(far_t, (k[r->kn[j] ^ 1] + r->kfar[j]) * r->kinv[j]);
+  }
+#endif
+  far_t *= ACCEL_FAR_SCALE;
   int8 hit = near_t <= far_t;
   int8 bits = hit & (int8)(1, 2, 4, 8, 16, 32, 64, 128);
   int4 b4 = bits.lo | bits.hi;
@@ -81,7 +128,8 @@ PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, f
   accel_miss(hit);
   float best = tmax;
   unbounded_closest(geom, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
-  BvhRay r = bvh_ray(o, d, time, accel_nodes);
+  BvhRay r;
+  bvh_ray(&r, o, d, time, accel_nodes);
   PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack_code[PRISM_ACCEL_STACK];
@@ -139,7 +187,8 @@ PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu
                                     float tmin, float tmax) {
   float carried = unbounded_transmittance(geom, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
-  BvhRay r = bvh_ray(o, d, time, accel_nodes);
+  BvhRay r;
+  bvh_ray(&r, o, d, time, accel_nodes);
   PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack[PRISM_ACCEL_STACK];

@@ -34,4 +34,15 @@ typedef struct BvhMotionBoundsGpu {
   float lo_z[8], hi_z[8];
 } BvhMotionBoundsGpu;
 
+/* "Set of normals" bounds (Kay and Kajiya 1986), -DPRISM_BVH_KDOP: besides the
+ * three axes' slabs, each child is bounded by slabs along the four diagonals
+ * (1,1,1), (1,1,-1), (1,-1,1), (-1,1,1) (unnormalised: a slab holds n.x over
+ * the child), a 14-sided polytope that hugs slanted geometry closer than its
+ * box. 256 bytes = 8 float8, after the node (and its motion bounds). Empty
+ * slots are inverted here too. */
+#define BVH_KDOP_DIAGONALS 4
+typedef struct BvhKdopGpu {
+  float slab[2 * BVH_KDOP_DIAGONALS][8]; /* float8 2j: the children's lows along diagonal j; 2j + 1: highs */
+} BvhKdopGpu;
+
 #endif

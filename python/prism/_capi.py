@@ -46,7 +46,8 @@ class RenderOptions(Structure):
     _fields_ = [("struct_size", c_size_t), ("width", c_uint32), ("height", c_uint32), ("spp", c_uint32),
                 ("max_depth", c_uint32), ("min_weight", c_float), ("seed", c_uint64), ("accel", c_uint32),
                 ("aa", c_uint32), ("filter", c_uint32), ("first_hit", c_uint32), ("aa_threshold", c_float),
-                ("aa_max_level", c_uint32), ("profile", c_uint32), ("inside_test", c_uint32), ("shadows", c_uint32)]
+                ("aa_max_level", c_uint32), ("profile", c_uint32), ("inside_test", c_uint32), ("shadows", c_uint32),
+                ("bounds", c_uint32)]
 
 
 class RenderStats(Structure):
@@ -115,6 +116,8 @@ _FUNCTIONS = {
     "prismParseInsideTest": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismParseShadows": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismShadowsName": (c_char_p, [c_uint32]),
+    "prismParseBounds": (Status, [c_char_p, POINTER(c_uint32)]),
+    "prismBoundsName": (c_char_p, [c_uint32]),
     "prismParseAov": (Status, [c_char_p, POINTER(c_uint32)]),
     "prismGetAovChannels": (Status, [c_uint32, POINTER(c_uint32)]),
     "prismGetRenderOptions": (Status, [c_void_p, POINTER(RenderOptions)]),

@@ -16,7 +16,7 @@ assert RAY_DTYPE.itemsize == 32 and HIT_DTYPE.itemsize == 16
 
 _ENUM_OPTIONS = {"accel": lib.prismParseAccel, "aa": lib.prismParseAa, "filter": lib.prismParseFilter,
                  "first_hit": lib.prismParseFirstHit, "inside_test": lib.prismParseInsideTest,
-                 "shadows": lib.prismParseShadows}
+                 "shadows": lib.prismParseShadows, "bounds": lib.prismParseBounds}
 _PLAIN_OPTIONS = ("width", "height", "spp", "max_depth", "min_weight", "seed", "aa_threshold", "aa_max_level")
 
 
@@ -119,7 +119,7 @@ class Context:
     def render(self, scene, aovs=(), progress=None, **options):
         """Renders `scene`; returns a Render. `options`: width, height, spp,
         max_depth, min_weight, seed, accel, aa, filter, first_hit, inside_test,
-        shadows, aa_threshold, aa_max_level (the scene's own where not given). `aovs`: names among depth,
+        shadows, bounds, aa_threshold, aa_max_level (the scene's own where not given). `aovs`: names among depth,
         normal, primid, albedo. `progress(fraction)` is called as the render goes;
         return True from it to cancel (prism.Cancelled is raised)."""
         o = self.options(scene, **options)

@@ -214,3 +214,12 @@ def test_the_light_buffer_casts_the_structures_shadows(ctx, scenes_dir):
     assert np.abs(a.rgba - b.rgba).max() <= 1e-6
     with pytest.raises(prism.Error, match="unknown shadow mode"):
         ctx.render(scene, shadows="shadowmap")
+
+
+def test_kdop_bounds_render_the_boxes_image(ctx, scenes_dir):
+    scene = prism.Scene.load(os.path.join(scenes_dir, "teapot.json"))
+    a = ctx.render(scene, width=64, height=48, bounds="aabb", accel="bvh")
+    b = ctx.render(scene, width=64, height=48, bounds="kdop", accel="bvh")
+    assert np.array_equal(a.rgba, b.rgba)
+    with pytest.raises(prism.Error, match="unknown bounds"):
+        ctx.render(scene, bounds="obb")

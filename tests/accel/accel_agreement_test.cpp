@@ -199,6 +199,17 @@ void checkScene(const AccelScene& scene, std::size_t random_count, int camera_si
     checkOcclusion("against bvh", bvh_occluded, engine.occluded(shadows));
     checkCarried("against bvh", bvh_carried, engine.transmittance(shadow_rays));
   }
+  {
+    // The same tree with "set of normals" bounds: only the node tests differ.
+    AccelBuildOptions kdop;
+    kdop.bvh_kdop = true;
+    RayQueryEngine engine(context, scene.objects, AccelKind::Bvh, scene.materials, kdop);
+    INFO("k-DOP " << describeAccel(engine.accel()));
+    CHECK(engine.accel().kernel_options.find("-DPRISM_BVH_KDOP") != std::string::npos);
+    checkHits(scene, "k-DOP bvh against bvh", rays, bvh_hits, engine.intersect(rays));
+    checkOcclusion("k-DOP bvh against bvh", bvh_occluded, engine.occluded(shadows));
+    checkCarried("k-DOP bvh against bvh", bvh_carried, engine.transmittance(shadow_rays));
+  }
 }
 
 }  // namespace

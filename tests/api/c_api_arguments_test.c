@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
   PrismFilter filter;
   PrismFirstHit first_hit;
   PrismShadows shadows;
+  PrismBounds bounds;
   PrismAov aov;
   PrismRay ray;
   PrismHit hit;
@@ -212,13 +213,16 @@ int main(int argc, char** argv) {
   BAD(prismParseShadows(NULL, &shadows), "prismParseShadows");
   BAD(prismParseShadows("auto", NULL), "prismParseShadows");
   BAD(prismParseShadows("shadowmap", &shadows), "unknown shadow mode 'shadowmap' (expected auto, accel, lightbuffer)");
+  BAD(prismParseBounds(NULL, &bounds), "prismParseBounds");
+  BAD(prismParseBounds("kdop", NULL), "prismParseBounds");
+  BAD(prismParseBounds("obb", &bounds), "unknown bounds 'obb' (expected aabb, kdop)");
   BAD(prismParseAov(NULL, &aov), "prismParseAov");
   BAD(prismParseAov("depth", NULL), "prismParseAov");
   BAD(prismGetAovChannels((PrismAov)99, &u32), "prismGetAovChannels");
   BAD(prismGetAovChannels(PRISM_AOV_DEPTH, NULL), "prismGetAovChannels");
   if (prismAccelName((PrismAccel)99) != NULL || prismAaName((PrismAa)99) != NULL ||
       prismFilterName((PrismFilter)99) != NULL || prismFirstHitName((PrismFirstHit)99) != NULL ||
-      prismShadowsName((PrismShadows)99) != NULL ||
+      prismShadowsName((PrismShadows)99) != NULL || prismBoundsName((PrismBounds)99) != NULL ||
       prismStatusName((PrismStatus)999) == NULL) {
     fprintf(stderr, "names of unknown values: NULL (a status: a text that says unknown)\n");
     ++failures;

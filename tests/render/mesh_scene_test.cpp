@@ -3,6 +3,7 @@
 // the quick-render camera frames the mesh.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -171,6 +172,46 @@ TEST_CASE("objects naming one mesh file share it, analytic objects number first,
   CHECK((id(10, 16) >= 1 && id(10, 16) <= int(n)));
   CHECK((id(37, 16) > int(n) && id(37, 16) <= int(2 * n)));
   CHECK(id(24, 16) == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("k-DOP bounds render the boxes' image bit for bit, moving objects included, and bad names are refused",
+          "[render][mesh][kdop]") {
+  SmallMesh m = icosphere();
+  fs::path dir = scratch();
+  writeObj(m, dir / "ico.obj");
+  std::string json = R"({
+    "camera": {"position": [0.3, 1, 9], "look_at": [0, 0, 0], "fov": 40, "shutter": [0, 1]},
+    "film": {"width": 48, "height": 32, "spp": 2},
+    "materials": {"glass": {"diffuse": [0.1, 0.1, 0.1], "transmit": 0.8, "ior": 1.5},
+                  "mirror": {"diffuse": [0.2, 0.2, 0.2], "reflect": 0.7}},
+    "lights": [{"position": [0, 5, 9]}],
+    "render": {"accel": "bvh", "bounds": "kdop"},
+    "objects": [
+      {"type": "mesh", "file": "ico.obj", "material": "glass", "transform": {"translate": [-2, 0, 0], "rotate": {"axis": [1, 1, 0], "angle": 40}}},
+      {"type": "mesh", "file": "ico.obj", "transform": {"translate": [2, 0, 0]}, "transform_end": {"translate": [2, 0.5, 0]}},
+      {"type": "sphere", "center": [0, 0, -1], "radius": 0.8, "material": "mirror"},
+      {"type": "box", "min": [-3, -2, -2], "max": [3, -1.5, 1]},
+      {"type": "cylinder", "radius": 0.3, "height": 1, "transform": {"translate": [0, 1.2, 0]}}
+    ]
+  })";
+  std::ofstream(dir / "scene.json") << json;
+  Scene scene = loadSceneFile((dir / "scene.json").string());
+  RenderOptions kdop = RenderOptions::fromScene(scene);
+  REQUIRE(kdop.bounds == BoundsKind::Kdop);
+  RenderOptions boxes = kdop;
+  boxes.bounds = BoundsKind::Aabb;
+  RenderResult a = test::sharedRenderer().render(scene, boxes);
+  RenderResult b = test::sharedRenderer().render(scene, kdop);
+  REQUIRE(a.rgba.size() == b.rgba.size());
+  CHECK(std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * sizeof(float)) == 0);
+  CHECK(a.primid == b.primid);
+  CHECK(std::count_if(a.primid.begin(), a.primid.end(), [](auto id) { return id >= 0; }) > long(a.primid.size() / 5));
+
+  std::ofstream(dir / "bad.json") << R"({"render": {"bounds": "obb"}})";
+  CHECK_THROWS_WITH(loadSceneFile((dir / "bad.json").string()),
+                    Catch::Contains("render.bounds") && Catch::Contains("unknown bounds 'obb'") &&
+                        Catch::Contains("aabb, kdop"));
   fs::remove_all(dir);
 }
 
