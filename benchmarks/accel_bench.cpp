@@ -116,6 +116,7 @@ long structureColour(const std::string& s) {
   if (s == "bsp") return 0x009E73;
   if (s == "none") return 0xCC79A7;
   if (s == "bvh-kdop") return 0x56B4E9;
+  if (s == "bvh-kobj") return 0xE69F00;
   return 0x000000;
 }
 
@@ -220,20 +221,28 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     }
 #endif
     std::vector<std::unique_ptr<RayQueryEngine>> engines;
-    std::vector<std::pair<AccelKind, bool>> variants;  // (structure, k-DOP bounds)
-    for (AccelKind kind : options.structures) variants.emplace_back(kind, false);
-    if (options.bvh_kdop) variants.emplace_back(AccelKind::Bvh, true);
-    for (const auto& [kind, kdop] : variants) {
+    struct Variant {
+      AccelKind kind;
+      const char* name;
+      bool kdop_objects, kdop_bvh;
+    };
+    std::vector<Variant> variants;
+    for (AccelKind kind : options.structures) variants.push_back({kind, accelName(kind), false, false});
+    if (options.bvh_kdop) variants.push_back({AccelKind::Bvh, "bvh-kdop", true, true});
+    if (options.bvh_kdop_objects) variants.push_back({AccelKind::Bvh, "bvh-kobj", true, false});
+    for (const Variant& v : variants) {
+      const AccelKind kind = v.kind;
       AccelBuildOptions build;
-      build.bvh_kdop = kdop;
+      build.kdop_objects = v.kdop_objects;
+      build.kdop_bvh = v.kdop_bvh;
       engines.push_back(std::make_unique<RayQueryEngine>(context, scene.geometry, kind, std::vector<MaterialGpu>{}, build));
       RayQueryEngine* engine = engines.back().get();
       const AccelStats& st = engine->accel().stats;
       Contender c;
       c.accel = &engine->accel();
-      c.row.structure = kdop ? "bvh-kdop" : accelName(kind);
+      c.row.structure = v.name;
       c.row.build_seconds = st.build_seconds;
-      c.rebuild = [&scene, kind = kind, build] { return buildAccel(kind, scene.geometry.objects, build)->stats.build_seconds; };
+      c.rebuild = [&scene, kind, build] { return buildAccel(kind, scene.geometry.objects, build)->stats.build_seconds; };
       c.row.bytes_per_triangle =
           scene.geometry.primitive_count == 0 ? kNaN : double(engine->deviceBytes()) / scene.geometry.primitive_count;
       c.row.nodes = static_cast<double>(st.node_count);
@@ -280,6 +289,7 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
         const BvhVisits r = bvhNodeVisits(*c.accel, random, random_hits);
         c.row.visits_primary = p.inner + p.leaves;
         c.row.visits_random = r.inner + r.leaves;
+        c.row.objects_primary = p.objects;
       }
     }
     const std::vector<RayGpu> shadows_gpu = toRayGpu(shadows);

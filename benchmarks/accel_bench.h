@@ -20,7 +20,8 @@ struct AccelBenchOptions {
   std::string data_dir;               // --data: searched first for the ladder (bench_data.h)
   std::string out_dir = "bench-out";  // CSV, JSON and PNG go here
   std::vector<AccelKind> structures = {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp};
-  bool bvh_kdop = false;  // a BVH with "set of normals" bounds too (--structures bvh-kdop)
+  bool bvh_kdop = false;          // a BVH with "set of normals" bounds too (--structures bvh-kdop)
+  bool bvh_kdop_objects = false;  // ... on the objects alone, not the nodes (--structures bvh-kobj)
   int camera = 1024;                  // primary rays: camera x camera
   std::size_t random_rays = std::size_t(1) << 20;
   int repeats = 3;                    // timings are the median of this many runs

@@ -36,8 +36,8 @@ std::ofstream openOut(const std::string& path) {
 void printTableHeader(std::ostream& out) {
   char line[512];
   std::snprintf(line, sizeof line,
-                "%-26s %9s %-8s %9s %7s %9s %9s %6s %7s %5s %6s %6s %8s %8s %8s %6s %6s %6s %6s %7s\n", "scene",
-                "tris", "accel", "build s", "B/tri", "nodes", "leaves", "p/leaf", "SAH", "dup", "vis/p", "vis/r",
+                "%-26s %9s %-8s %9s %7s %9s %9s %6s %7s %5s %6s %6s %6s %8s %8s %8s %6s %6s %6s %6s %7s\n", "scene",
+                "tris", "accel", "build s", "B/tri", "nodes", "leaves", "p/leaf", "SAH", "dup", "vis/p", "vis/r", "obj/p",
                 "prim Mr/s", "shad Mr/s", "rand Mr/s", "xEprim", "xEshad", "xErand", "xEbld", "agree%");
   out << line;
 }
@@ -46,11 +46,12 @@ void printTableRow(std::ostream& out, const BenchRow& r) {
   std::string scene = r.scene.size() > 26 ? "..." + r.scene.substr(r.scene.size() - 23) : r.scene;
   char line[512];
   std::snprintf(line, sizeof line,
-                "%-26s %9zu %-8s %9s %7s %9s %9s %6s %7s %5s %6s %6s %8s %8s %8s %6s %6s %6s %6s %7s\n",
+                "%-26s %9zu %-8s %9s %7s %9s %9s %6s %7s %5s %6s %6s %6s %8s %8s %8s %6s %6s %6s %6s %7s\n",
                 scene.c_str(), r.triangles, r.structure.c_str(), num(r.build_seconds, "%.4f").c_str(),
                 num(r.bytes_per_triangle, "%.1f").c_str(), num(r.nodes, "%.0f").c_str(), num(r.leaves, "%.0f").c_str(),
                 num(r.prims_per_leaf, "%.2f").c_str(), num(r.sah, "%.1f").c_str(), num(r.duplication, "%.2f").c_str(),
                 num(r.visits_primary, "%.1f").c_str(), num(r.visits_random, "%.1f").c_str(),
+                num(r.objects_primary, "%.2f").c_str(),
                 num(r.primary_mrays, "%.2f").c_str(), num(r.shadow_mrays, "%.2f").c_str(),
                 num(r.random_mrays, "%.2f").c_str(), num(r.primary_ratio, "%.2f").c_str(),
                 num(r.shadow_ratio, "%.2f").c_str(), num(r.random_ratio, "%.2f").c_str(),
@@ -62,7 +63,7 @@ void writeCsv(const std::string& path, const std::vector<BenchRow>& rows) {
   std::ofstream f = openOut(path);
   f << "scene,triangles,structure,build_seconds,bytes_per_triangle,nodes,leaves,prims_per_leaf,sah_cost,"
        "duplication,primary_mrays,shadow_mrays,random_mrays,primary_vs_embree,shadow_vs_embree,random_vs_embree,"
-       "build_time_vs_embree,agreement_percent,visits_per_primary_ray,visits_per_random_ray\n";
+       "build_time_vs_embree,agreement_percent,visits_per_primary_ray,visits_per_random_ray,objects_per_primary_ray\n";
   for (const BenchRow& r : rows) {
     auto v = [](double x) { return std::isfinite(x) ? num(x, "%.6g") : std::string(); };
     f << csvField(r.scene) << ',' << r.triangles << ',' << r.structure << ',' << v(r.build_seconds) << ','
@@ -70,7 +71,7 @@ void writeCsv(const std::string& path, const std::vector<BenchRow>& rows) {
       << v(r.sah) << ',' << v(r.duplication) << ',' << v(r.primary_mrays) << ',' << v(r.shadow_mrays) << ','
       << v(r.random_mrays) << ',' << v(r.primary_ratio) << ',' << v(r.shadow_ratio) << ',' << v(r.random_ratio)
       << ',' << v(r.build_ratio) << ',' << v(r.agreement) << ',' << v(r.visits_primary) << ','
-      << v(r.visits_random) << '\n';
+      << v(r.visits_random) << ',' << v(r.objects_primary) << '\n';
   }
   if (!f) throw std::runtime_error(path + ": write failed");
 }
@@ -97,6 +98,7 @@ void writeJson(const std::string& path, const BenchMeta& meta, const std::vector
                          {"duplication", jsonNumber(r.duplication)},
                          {"visits_per_primary_ray", jsonNumber(r.visits_primary)},
                          {"visits_per_random_ray", jsonNumber(r.visits_random)},
+                         {"objects_per_primary_ray", jsonNumber(r.objects_primary)},
                          {"primary_mrays", jsonNumber(r.primary_mrays)},
                          {"shadow_mrays", jsonNumber(r.shadow_mrays)},
                          {"random_mrays", jsonNumber(r.random_mrays)},

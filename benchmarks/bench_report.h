@@ -28,6 +28,7 @@ struct BenchRow {
   // BVH rows: wide nodes and leaves per ray whose bounds meet the ray before
   // its closest hit (workloads' bvhNodeVisits), camera and random rays.
   double visits_primary = kNaN, visits_random = kNaN;
+  double objects_primary = kNaN;  // analytic objects tested per camera ray (the same walk)
 };
 
 struct BenchMeta {

@@ -42,7 +42,8 @@ const char* kUsage =
     "  --device D          OpenCL device: index, cpu, gpu or a name substring\n"
     "  --sizes N,...       generated tori of about N triangles each (k and M suffixes allowed)\n"
     "  --structures LIST   comma-separated among bvh, bvh-kdop (the BVH with \"set of normals\"\n"
-    "                      bounds), octree, bsp, none (default bvh,octree,bsp)\n"
+    "                      bounds on its nodes and its objects), bvh-kobj (on its objects\n"
+    "                      only), octree, bsp, none (default bvh,octree,bsp)\n"
     "  --out DIR           where accel.csv, accel.json and the PNG plots go (default bench-out)\n"
     "  --camera N          N x N primary rays (default 1024)\n"
     "  --random N          incoherent random rays (default 1048576)\n"
@@ -147,8 +148,10 @@ int main(int argc, char** argv) {
         prism::AccelKind kind;
         if (s == "bvh-kdop")
           options.bvh_kdop = true;
+        else if (s == "bvh-kobj")
+          options.bvh_kdop_objects = true;
         else if (!prism::tryParseAccelKind(s, &kind))
-          usageError("--structures: unknown structure '" + s + "' (expected bvh, bvh-kdop, octree, bsp or none)");
+          usageError("--structures: unknown structure '" + s + "' (expected bvh, bvh-kdop, bvh-kobj, octree, bsp or none)");
         else
           options.structures.push_back(kind);
       }

@@ -401,10 +401,10 @@ typedef enum PrismShadows {
   PRISM_SHADOWS_LIGHTBUFFER = 2
 } PrismShadows;
 
-/* What bounds the BVH's children: their axis-aligned boxes, or their boxes and
- * slabs along four diagonals too ("set of normals" bounds, Kay and Kajiya; a
- * 14-sided polytope that hugs slanted geometry closer). The same image either
- * way; the other structures' cells are boxes whatever this says. */
+/* Bounding volumes: axis-aligned boxes, or "set of normals" slabs along four
+ * diagonals too (Kay and Kajiya) around each analytic object in a structure's
+ * leaves, tested before the object, and around each BVH child besides its box.
+ * The same image either way. */
 typedef enum PrismBounds { PRISM_BOUNDS_AABB = 0, PRISM_BOUNDS_KDOP = 1 } PrismBounds;
 
 /* Parse a lower-case name ("auto", "none", "grid", "quincunx", "adaptive", "jitter",

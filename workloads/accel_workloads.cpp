@@ -168,8 +168,9 @@ bool clipSlab(double lo, double hi, double o, double d, double& t0, double& t1) 
 BvhVisits bvhNodeVisits(const DeviceAccel& accel, const std::vector<QueryRay>& rays, const std::vector<HitGpu>& hits) {
   const std::string& options = accel.kernel_options;
   if (accel.kind != AccelKind::Bvh || options.find("-DPRISM_BVH_MOTION") != std::string::npos || rays.empty())
-    return {NAN, NAN};
+    return {NAN, NAN, NAN};
   const bool kdop = options.find("-DPRISM_BVH_KDOP") != std::string::npos;
+  const bool object_kdop = options.find("-DPRISM_OBJECT_KDOP") != std::string::npos;
   const std::size_t node_floats = (7 + (kdop ? 8 : 0)) * 8;  // float8 words of a node (kernels/accel/bvh.h)
   const float* nodes = accel.nodes.size() > 2 ? accel.nodes[2].v : nullptr;
   BvhVisits sum;
@@ -195,14 +196,29 @@ BvhVisits bvhNodeVisits(const DeviceAccel& accel, const std::vector<QueryRay>& r
           meets = clipSlab(k[i], k[8 + i], diagonalDot(j, o[0], o[1], o[2]), diagonalDot(j, d[0], d[1], d[2]), t0, t1);
         }
         if (!meets) continue;
-        if (child > 0)
+        if (child > 0) {
           stack.push_back(child);
-        else
-          sum.leaves += 1;
+          continue;
+        }
+        sum.leaves += 1;
+        const int code = ~child, first = code >> BVH_LEAF_COUNT_BITS, count = (code & (BVH_LEAF_MAX_PACKETS - 1)) + 1;
+        for (int p = first; p < first + count; ++p) {
+          const TriPacketGpu& pk = accel.packets[p];
+          const float* lanes = pk.v0x;  // float4 words: lane k of word w at 4 w + k
+          for (int k = 0; k < PACKET_LANES; ++k) {
+            if (pk.prim[k] > -2) continue;  // a triangle or an empty lane
+            double u0 = q.tmin, u1 = t_end;
+            bool tested = true;
+            for (int j = 0; object_kdop && j < BVH_KDOP_DIAGONALS && tested; ++j)
+              tested = clipSlab(lanes[8 * j + k], lanes[8 * j + 4 + k], diagonalDot(j, o[0], o[1], o[2]),
+                                diagonalDot(j, d[0], d[1], d[2]), u0, u1);
+            sum.objects += tested;
+          }
+        }
       }
     }
   }
-  return {sum.inner / rays.size(), sum.leaves / rays.size()};
+  return {sum.inner / rays.size(), sum.leaves / rays.size(), sum.objects / rays.size()};
 }
 
 std::vector<QueryRay> cameraRays(const Aabb& box, int width, int height) {

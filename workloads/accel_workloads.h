@@ -41,9 +41,11 @@ TriangleMesh bumpyTorus(std::size_t triangles);
 // k-DOP bounds; not over moving primitives): per ray, the inner nodes and the
 // leaves whose bounds meet the ray between tmin and its closest hit (tmax on a
 // miss) in exact arithmetic, which every traversal order must visit to
-// confirm that hit. Means over the rays; NaN for a structure that is no such BVH.
+// confirm that hit, and the analytic objects in those leaves it must test
+// (with k-DOP bounds, those whose own slabs it meets there). Means over the
+// rays; NaN for a structure that is no such BVH.
 struct BvhVisits {
-  double inner = 0, leaves = 0;
+  double inner = 0, leaves = 0, objects = 0;
 };
 BvhVisits bvhNodeVisits(const DeviceAccel& accel, const std::vector<QueryRay>& rays, const std::vector<HitGpu>& hits);
 

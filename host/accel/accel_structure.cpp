@@ -115,6 +115,7 @@ std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<Object
     accel->stats.primitives = prims.bounded.size();
     accel->stats.unbounded = prims.unbounded.size();
   }
+  if (options.kdop_objects && kind != AccelKind::None) accel->kernel_options += " -DPRISM_OBJECT_KDOP";
   // Moving objects' code is compiled only into the programs of scenes that have some.
   if (anyMoving(objects)) accel->kernel_options += " " + std::string(kMotionKernelOption);
   accel->stats.bytes = accel->nodes.size() * sizeof(AccelWord) + accel->packets.size() * sizeof(TriPacketGpu) +

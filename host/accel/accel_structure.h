@@ -94,9 +94,13 @@ struct AccelBuildOptions {
   // and close, interpolated per ray); false keeps only the swept boxes, which
   // prism-bench distributed compares against.
   bool bvh_linear_bounds = true;
-  // BVH: children bounded by "set of normals" slabs along the four diagonals
-  // as well as by their boxes (kdop_bounds.h); the render option `bounds`.
-  bool bvh_kdop = false;
+  // "Set of normals" slabs along the four diagonals (kdop_bounds.h); the
+  // render option `bounds: kdop` sets both. kdop_objects: the analytic objects
+  // in every structure's leaves are tested only where the ray meets their
+  // slabs (object bounds); kdop_bvh: the BVH bounds its children by slabs as
+  // well as by boxes.
+  bool kdop_objects = false;
+  bool kdop_bvh = false;
 };
 
 // Scenes of at most this many primitives are traced by brute force under

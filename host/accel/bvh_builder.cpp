@@ -447,7 +447,7 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
     out.nodes[1].v[3] = prims.shutter_close;
   }
   std::vector<DiagonalSlabs> slabs;
-  if (options.bvh_kdop && !nodes.empty()) slabs = nodeDiagonalSlabs(objects, prims, nodes, refs);
+  if (options.kdop_bvh && !nodes.empty()) slabs = nodeDiagonalSlabs(objects, prims, nodes, refs);
   WideFlattener(objects, nodes, refs, moving ? &motion : nullptr, slabs.empty() ? nullptr : &slabs, out)
       .run(prims.scene.area());
   out.stats.references = refs.size();

@@ -1,5 +1,10 @@
 #include "accel/leaf_packets.h"
 
+#include <limits>
+
+#include "accel/kdop_bounds.h"
+#include "accel/prim_ref.h"
+
 namespace prism {
 namespace {
 
@@ -22,6 +27,28 @@ void putTriangle(TriPacketGpu& p, int lane, const ObjectGpu& ob, std::int32_t id
   p.e2y[lane] = v[7] - v[1];
   p.e2z[lane] = v[8] - v[2];
   p.prim[lane] = id;
+}
+
+// An object lane's diagonal slabs (kdop_bounds.h) in the eight floats its
+// lane leaves free: lo and hi of diagonal j in float4 words 2j and 2j + 1
+// (kernels/accel/leaf_packets.h, packet_lane_slabs_meet); unbounded (the
+// whole line) when the object has no finite box.
+void putObjectSlabs(TriPacketGpu& p, int lane, const ObjectGpu& ob) {
+  DiagonalSlabs s = DiagonalSlabs::empty();
+  Aabb box;
+  if (objectBounds(ob, &box)) {
+    s = primitiveDiagonalSlabs(ob, box);
+  } else {
+    for (int j = 0; j < BVH_KDOP_DIAGONALS; ++j) {
+      s.lo[j] = -std::numeric_limits<float>::infinity();
+      s.hi[j] = std::numeric_limits<float>::infinity();
+    }
+  }
+  float* words[2 * BVH_KDOP_DIAGONALS] = {p.v0x, p.v0y, p.v0z, p.e1x, p.e1y, p.e1z, p.e2x, p.e2y};
+  for (int j = 0; j < BVH_KDOP_DIAGONALS; ++j) {
+    words[2 * j][lane] = s.lo[j];
+    words[2 * j + 1][lane] = s.hi[j];
+  }
 }
 
 // The motion record a moving triangle points to (its index in `objects`).
@@ -74,6 +101,7 @@ PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::
       out.push_back(emptyPacket());
       lane = 0;
     }
+    putObjectSlabs(out.back(), lane, ob);
     out.back().prim[lane++] = -(ids[i] + 2);
   }
   range.count = static_cast<std::uint32_t>(out.size() - range.start);

@@ -1,6 +1,7 @@
 // Writes a leaf's primitives as TriPacketGpu packets (kernels/shared/tri_packet_gpu.h):
 // triangles first, four to a packet, then the other bounded primitives, which
-// the kernels test one by one through object_intersect.
+// the kernels test one by one through prim_intersect (with their diagonal
+// slabs in their lanes, for k-DOP object bounds).
 #pragma once
 
 #include <cstddef>

@@ -146,10 +146,11 @@ Speed:
                     direction; at most 64 point lights), or auto (default: the
                     light buffer when its cells list few candidates). The same
                     shadows either way.
-  --bounds B        what bounds the BVH's children: aabb (default, their boxes)
-                    or kdop (their boxes and slabs along four diagonals, Kay
-                    and Kajiya's "set of normals": fewer node hits on slanted
-                    geometry, bigger nodes). The same image either way.
+  --bounds B        bounding volumes: aabb (default, boxes) or kdop (Kay and
+                    Kajiya's "set of normals": slabs along four diagonals
+                    around each analytic object, tested before it, and around
+                    each BVH child besides its box; pays in scenes of many
+                    analytic objects). The same image either way.
 
 Device:
   --device D        the OpenCL device: an index from 'prism devices', 'cpu', 'gpu', or

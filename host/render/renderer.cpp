@@ -127,7 +127,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_geometry.upload(m_context, gpu);
   {
     AccelBuildOptions build = m_accel_build;
-    build.bvh_kdop = options.bounds == BoundsKind::Kdop;
+    build.kdop_objects = build.kdop_bvh = options.bounds == BoundsKind::Kdop;
     std::unique_ptr<DeviceAccel> accel = buildAccel(options.accel, gpu.objects, build);
     m_accel.upload(m_context, *accel);
     result.stats.accel = accel->kind;  // what auto chose

@@ -41,13 +41,6 @@ typedef struct BvhRay {
 #endif
 } BvhRay;
 
-#ifdef PRISM_BVH_KDOP
-/* Diagonal j of the k-DOP's four, (1,1,1), (1,1,-1), (1,-1,1), (-1,1,1), dotted with v. */
-PRISM_HOT float bvh_diagonal_dot(int j, float3 v) {
-  return j == 0 ? v.x + v.y + v.z : j == 1 ? v.x + v.y - v.z : j == 2 ? v.x - v.y + v.z : -v.x + v.y + v.z;
-}
-#endif
-
 /* Fills *ray (not returned by value: a struct this size would come back
  * through a hidden noalias pointer, whose inlining marks Oclgrind cannot read). */
 PRISM_HOT void bvh_ray(BvhRay* ray, float3 o, float3 d, float time, __global const float4* header) {
@@ -64,7 +57,7 @@ PRISM_HOT void bvh_ray(BvhRay* ray, float3 o, float3 d, float time, __global con
   float3 a = fabs(o), b = fmax(fabs(header[0].xyz), fabs(header[1].xyz));
   float slack = ((a.x + a.y + a.z) + (b.x + b.y + b.z)) * 0x1p-20f;
   for (int j = 0; j < BVH_KDOP_DIAGONALS; ++j) {
-    float dn = bvh_diagonal_dot(j, d), on = bvh_diagonal_dot(j, o);
+    float dn = accel_diagonal_dot(j, d), on = accel_diagonal_dot(j, o);
     float ki = 1.0f / (fabs(dn) < 1e-30f ? copysign(1e-30f, dn) : dn);
     r.kinv[j] = ki;
     r.kn[j] = 2 * j + (ki >= 0.0f ? 0 : 1);

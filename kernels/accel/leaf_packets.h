@@ -40,6 +40,39 @@ PRISM_HOT float3 accel_safe_rcp(float3 d) {
 
 PRISM_HOT int accel_ctz(int x) { return 31 - clz(x & -x); }
 
+/* Diagonal j of the "set of normals" slabs (shared/bvh_node_gpu.h), (1,1,1),
+ * (1,1,-1), (1,-1,1) or (-1,1,1), dotted with v. */
+PRISM_HOT float accel_diagonal_dot(int j, float3 v) {
+  return j == 0 ? v.x + v.y + v.z : j == 1 ? v.x + v.y - v.z : j == 2 ? v.x - v.y + v.z : -v.x + v.y + v.z;
+}
+
+PRISM_HOT float accel_lane(float4 v, int k) { return k == 0 ? v.x : k == 1 ? v.y : k == 2 ? v.z : v.w; }
+
+/* Whether the ray can meet lane k's object between tmin and tlimit by its
+ * diagonal slabs (host/accel/leaf_packets.cpp; "set of normals" object
+ * bounds). o.n and the slab values are rounded, so each slab is widened by
+ * 2^-20 of their magnitudes, as the BVH's are (accel/bvh.h). */
+PRISM_HOT bool packet_lane_slabs_meet(__global const TriPacketGpu* pk, int k, float3 o, float3 d, float tmin,
+                                      float tlimit) {
+  /* Read as float4 words, as packet_intersect reads them: a float pointer
+   * cast from the record is folded into an index of its first member array
+   * (v0x[4]), which a bounds checker then sees overrun. */
+  __global const float4* q = (__global const float4*)pk;
+  float3 a = fabs(o);
+  float magnitude = a.x + a.y + a.z;
+  float t0 = tmin, t1 = tlimit;
+  for (int j = 0; j < 4; ++j) {
+    float lo = accel_lane(q[2 * j], k), hi = accel_lane(q[2 * j + 1], k);
+    float slack = (magnitude + fabs(lo) + fabs(hi)) * 0x1p-20f;
+    float on = accel_diagonal_dot(j, o), dn = accel_diagonal_dot(j, d);
+    float inv = 1.0f / (fabs(dn) < 1e-30f ? copysign(1e-30f, dn) : dn);
+    float ta = (lo - slack - on) * inv, tb = (hi + slack - on) * inv;
+    t0 = fmax(t0, fmin(ta, tb));
+    t1 = fmin(t1, fmax(ta, tb));
+  }
+  return t0 <= t1 * ACCEL_FAR_SCALE;
+}
+
 typedef struct PacketRay {
   float4 ox, oy, oz, dx, dy, dz;
   float time; /* for moving objects, which are tested one by one */
@@ -149,6 +182,9 @@ PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* 
       int id = -pk->prim[k] - 2;
       if (id < 0) continue;
       float tt, uu, vv;
+#ifdef PRISM_OBJECT_KDOP
+      if (!packet_lane_slabs_meet(pk, k, o, d, tmin, nextafter(*best, PRISM_INF))) continue;
+#endif
       /* nextafter: an exact tie must reach accel_accept */
       if (prim_intersect(geom, id, o, d, r->time, tmin, nextafter(*best, PRISM_INF), &tt, &uu, &vv))
         accel_accept(tt, uu, vv, id, best, hit);
@@ -234,6 +270,9 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
       int id = -pk->prim[k] - 2;
       if (id < 0) continue;
       float tt, uu, vv;
+#ifdef PRISM_OBJECT_KDOP
+      if (!packet_lane_slabs_meet(pk, k, o, d, tmin, tmax)) continue;
+#endif
       if (prim_intersect(geom, id, o, d, r->time, tmin, tmax, &tt, &uu, &vv)) {
         carried = accel_count_hit(carried, id, mailbox, geom, materials);
         if (carried == 0.0f) return 0.0f;

@@ -8,7 +8,10 @@
  *                 triangle record: geometry/primitive.h);
  *   prim[k] == PACKET_EMPTY: an unused lane (zero geometry, never hit);
  *   prim[k] <= -2: primitive -(prim[k] + 2), a sphere, box or transformed object
- *   tested through prim_intersect (its lane geometry is zero).
+ *   tested through prim_intersect; such lanes share packets only with each
+ *   other, and lane k's words 0..7 hold the object's slabs along the four
+ *   diagonals (lo, hi of diagonal j in words 2j, 2j + 1: "set of normals"
+ *   object bounds, tested under -DPRISM_OBJECT_KDOP).
  * A moving packet (PACKET_MOVING set in prim[0]) holds triangles of one moving
  * object in object space, lanes prim[k] = id | PACKET_MOVING (or empty): the
  * ray is mapped once per packet by that object's world-to-object transform at

@@ -202,7 +202,7 @@ void checkScene(const AccelScene& scene, std::size_t random_count, int camera_si
   {
     // The same tree with "set of normals" bounds: only the node tests differ.
     AccelBuildOptions kdop;
-    kdop.bvh_kdop = true;
+    kdop.kdop_objects = kdop.kdop_bvh = true;
     RayQueryEngine engine(context, scene.objects, AccelKind::Bvh, scene.materials, kdop);
     INFO("k-DOP " << describeAccel(engine.accel()));
     CHECK(engine.accel().kernel_options.find("-DPRISM_BVH_KDOP") != std::string::npos);

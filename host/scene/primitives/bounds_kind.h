@@ -1,7 +1,7 @@
-// What bounds the BVH's children (render.bounds, --bounds,
-// PrismRenderOptions.bounds): their axis-aligned boxes, or the boxes and
-// "set of normals" slabs along four diagonals as well (Kay and Kajiya's
-// bounding volumes; host/accel/kdop_bounds.h).
+// Bounding volumes (render.bounds, --bounds, PrismRenderOptions.bounds):
+// axis-aligned boxes, or "set of normals" slabs along four diagonals as well
+// (Kay and Kajiya) around the analytic objects in the leaves and the BVH's
+// children (host/accel/kdop_bounds.h, AccelBuildOptions::kdop_*).
 #pragma once
 
 #include <string>
