@@ -192,63 +192,65 @@ struct MotionBoxes {
   std::vector<Aabb> open, close;
 };
 
+// Visits every binary node children first: leaf(node) for a leaf, then for an
+// inner node join(node, child) for each of its two children.
+template <typename Leaf, typename Join>
+void childrenFirst(const std::vector<Node2>& nodes, Leaf leaf, Join join) {
+  std::vector<std::pair<int, bool>> todo{{0, false}};
+  while (!todo.empty()) {
+    auto [node, children_done] = todo.back();
+    todo.pop_back();
+    const Node2& n = nodes[node];
+    if (n.left < 0) {
+      leaf(node);
+    } else if (!children_done) {
+      todo.push_back({node, true});
+      todo.push_back({n.left, false});
+      todo.push_back({n.right, false});
+    } else {
+      join(node, n.left);
+      join(node, n.right);
+    }
+  }
+}
+
 // The nodes' linear bounds from the primitives' (PrimitiveSet::bounds_open and
 // bounds_close).
 MotionBoxes nodeMotionBoxes(const PrimitiveSet& prims, const std::vector<Node2>& nodes,
                             const std::vector<PrimRef>& refs) {
-  const std::vector<Aabb>& prim_open = prims.bounds_open;
-  const std::vector<Aabb>& prim_close = prims.bounds_close;
   MotionBoxes m;
   m.open.resize(nodes.size());
   m.close.resize(nodes.size());
-  // Depth first from the root: children before their parent's union.
-  std::vector<std::pair<int, bool>> todo{{0, false}};
-  while (!todo.empty()) {
-    auto [node, children_done] = todo.back();
-    todo.pop_back();
-    const Node2& n = nodes[node];
-    if (n.left < 0) {
-      for (int i = 0; i < n.count; ++i) {
-        m.open[node].extend(prim_open[refs[n.first + i].index]);
-        m.close[node].extend(prim_close[refs[n.first + i].index]);
-      }
-    } else if (!children_done) {
-      todo.push_back({node, true});
-      todo.push_back({n.left, false});
-      todo.push_back({n.right, false});
-    } else {
-      for (int c : {n.left, n.right}) {
-        m.open[node].extend(m.open[c]);
-        m.close[node].extend(m.close[c]);
-      }
-    }
-  }
+  childrenFirst(
+      nodes,
+      [&](int node) {
+        const Node2& n = nodes[node];
+        for (int i = 0; i < n.count; ++i) {
+          m.open[node].extend(prims.bounds_open[refs[n.first + i].index]);
+          m.close[node].extend(prims.bounds_close[refs[n.first + i].index]);
+        }
+      },
+      [&](int node, int child) {
+        m.open[node].extend(m.open[child]);
+        m.close[node].extend(m.close[child]);
+      });
   return m;
 }
 
-// The diagonal slabs of every binary node (kdop_bounds.h), children first.
+// The diagonal slabs of every binary node (kdop_bounds.h).
 std::vector<DiagonalSlabs> nodeDiagonalSlabs(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims,
                                              const std::vector<Node2>& nodes, const std::vector<PrimRef>& refs) {
   std::vector<DiagonalSlabs> slabs(nodes.size(), DiagonalSlabs::empty());
-  std::vector<std::pair<int, bool>> todo{{0, false}};
-  while (!todo.empty()) {
-    auto [node, children_done] = todo.back();
-    todo.pop_back();
-    const Node2& n = nodes[node];
-    if (n.left < 0) {
-      for (int i = 0; i < n.count; ++i) {
-        const PrimRef& r = refs[n.first + i];
-        slabs[node].extend(primitiveDiagonalSlabs(objects[r.id], prims.bounds[r.index]));
-      }
-    } else if (!children_done) {
-      todo.push_back({node, true});
-      todo.push_back({n.left, false});
-      todo.push_back({n.right, false});
-    } else {
-      slabs[node].extend(slabs[n.left]);
-      slabs[node].extend(slabs[n.right]);
-    }
-  }
+  childrenFirst(
+      nodes,
+      [&](int node) {
+        const Node2& n = nodes[node];
+        for (int i = 0; i < n.count; ++i) {
+          const PrimRef& r = refs[n.first + i];
+          slabs[node].extend(primitiveDiagonalSlabs(objects[r.id], prims.bounds[r.index]));
+        }
+      },
+      [&](int node, int child) { slabs[node].extend(slabs[child]); });
   return slabs;
 }
 
