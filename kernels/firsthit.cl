@@ -3,8 +3,8 @@
  *
  *   firsthit_count_cells, firsthit_sort_samples: the batch's sample positions
  *     sorted by film pixel (a counting sort; scan.cl in between), each stored
- *     with its primary ray's direction (firsthit_pixel_major instead where they
- *     come in pixel order);
+ *     with its primary ray's direction (firsthit_pixel_starts or _counts, and
+ *     firsthit_pixel_scatter, instead where they come in pixel order);
  *   firsthit_bound: per primitive, the film pixels its conservative bounds touch
  *     (sampling/film_bounds.h) and how many 8x8-pixel blocks they span;
  *   firsthit_emit: one (primitive, block) pair per such block, at offsets
@@ -87,8 +87,9 @@ __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global c
 
 /* Positions in pixel order, spp to a pixel (the per-pixel sampling modes:
  * sample g of the image lies in pixel g / spp): the counts follow from the
- * numbering, and the slots need no atomics. cells: the padded block grid's. */
-__kernel void firsthit_pixel_counts(int width, int height, long first, int count, int spp, int cells,
+ * numbering, and the slots need no atomics. cells: the padded block grid's.
+ * (The host keeps first + count below 2^31, so int arithmetic serves.) */
+__kernel void firsthit_pixel_counts(int width, int height, int first, int count, int spp, int cells,
                                     __global int* cell_count) {
   int c = get_global_id(0);
   if (c >= cells) return;
@@ -101,27 +102,44 @@ __kernel void firsthit_pixel_counts(int width, int height, long first, int count
   cell_count[c] = n;
 }
 
-/* One work-item per cell, writing its samples' slots in a row: slot writes go
- * in order, and a sample's slot is known from its number alone
- * (firsthit_pixel_slot), so nothing records it. */
-__kernel void firsthit_pixel_scatter(__global const CameraGpu* camera, __global const float* xy, long first, int cells,
-                                     int spp, __global const int* cell_start, __global float4* sorted) {
-  int c = get_global_id(0);
-  if (c >= cells) return;
-  int slot = cell_start[c], n = cell_start[c + 1] - slot;
-  if (n == 0) return;
-  int2 pixel = firsthit_cell_xy(c, camera->width);
-  long g = max(((long)pixel.y * camera->width + pixel.x) * spp, first);
-  for (int j = 0; j < n; ++j) {
-    float3 d = camera_ray_dir(camera, xy[2 * (g + j)], xy[2 * (g + j) + 1]);
-    sorted[slot + j] = (float4)(d.x, d.y, d.z, 0.0f);
-  }
+/* The film's real pixels in cells before cell c (c up to the padded grid's
+ * cell count): whole block rows above, the blocks to the left in c's block
+ * row (as tall as the film lets them be), then c's own block row by row (as
+ * wide as the film lets it be). */
+inline int firsthit_pixels_before(int c, int width, int height) {
+  int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
+  int block = c / (FIRSTHIT_BLOCK * FIRSTHIT_BLOCK), in = c % (FIRSTHIT_BLOCK * FIRSTHIT_BLOCK);
+  int row = block / blocks_x, column = block % blocks_x;
+  if (row * FIRSTHIT_BLOCK >= height) return width * height;
+  int h = min(FIRSTHIT_BLOCK, height - row * FIRSTHIT_BLOCK), w = min(FIRSTHIT_BLOCK, width - column * FIRSTHIT_BLOCK);
+  int iy = in / FIRSTHIT_BLOCK, ix = in % FIRSTHIT_BLOCK;
+  return row * FIRSTHIT_BLOCK * width + column * FIRSTHIT_BLOCK * h + min(iy, h) * w + (iy < h ? min(ix, w) : 0);
 }
 
-inline int firsthit_pixel_slot(int width, long first, int spp, __global const int* cell_start, long g) {
-  long p = g / spp;
-  int cell = firsthit_cell((int)(p % width), (int)(p / width), width);
-  return cell_start[cell] + (int)(g - max(p * spp, first));
+/* A batch of every sample of the image in pixel order: the cells' starts in
+ * closed form, spp samples per real pixel (cell_start[cells] is the total),
+ * where a part of the image needs counts and a scan. */
+__kernel void firsthit_pixel_starts(int width, int height, int spp, int cells, __global int* cell_start) {
+  int c = get_global_id(0);
+  if (c > cells) return;
+  cell_start[c] = spp * firsthit_pixels_before(c, width, height);
+}
+
+inline int firsthit_pixel_slot(int width, int first, int spp, __global const int* cell_start, int g) {
+  int p = g / spp;
+  int cell = firsthit_cell(p % width, p / width, width);
+  return cell_start[cell] + g - max(p * spp, first);
+}
+
+/* One work-item per sample g = first + k of the image, its slot known from
+ * its number alone (firsthit_pixel_slot), so nothing records it. */
+__kernel void firsthit_pixel_scatter(__global const CameraGpu* camera, __global const float* xy, int first, int count,
+                                     int spp, __global const int* cell_start, __global float4* sorted) {
+  int k = get_global_id(0);
+  if (k >= count) return;
+  int g = first + k;
+  float3 d = camera_ray_dir(camera, xy[2 * g], xy[2 * g + 1]);
+  sorted[firsthit_pixel_slot(camera->width, first, spp, cell_start, g)] = (float4)(d.x, d.y, d.z, 0.0f);
 }
 
 /* A plain triangle (no transform: a static mesh's, or a triangle record) is
@@ -267,7 +285,7 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
  * first sample of the image is batch_first) came in pixel order, else slot_of
  * has the slots. */
 __kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
-                               int spp, long batch_first, __global const int* cell_start,
+                               int spp, int batch_first, __global const int* cell_start,
                                __global const int* slot_of, __global const float4* sorted,
                                __global const uint* entries, int first, __global HitGpu* hits) {
   const Geometry g = GEOMETRY_INIT;

@@ -34,9 +34,11 @@ void FirstHitPass::prepare(const GpuScene& scene) {
   m_wide = m_atomics == ZBufferAtomics::Wide || (m_atomics == ZBufferAtomics::Auto && has_wide);
   std::string options = m_wide ? "-DPRISM_ZBUFFER_WIDE" : "";
   if (anyMoving(scene.objects)) options += std::string(" ") + kMotionKernelOption;
+  options += " " + kindsKernelOption(scene.objects);
   m_count_cells = m_context.kernel("firsthit.cl", "firsthit_count_cells", options);
   m_sort_samples = m_context.kernel("firsthit.cl", "firsthit_sort_samples", options);
   m_pixel_counts = m_context.kernel("firsthit.cl", "firsthit_pixel_counts", options);
+  m_pixel_starts = m_context.kernel("firsthit.cl", "firsthit_pixel_starts", options);
   m_pixel_scatter = m_context.kernel("firsthit.cl", "firsthit_pixel_scatter", options);
   m_bound = m_context.kernel("firsthit.cl", "firsthit_bound", options);
   m_emit = m_context.kernel("firsthit.cl", "firsthit_emit", options);
@@ -97,27 +99,37 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   if (pixel_spp <= 0) m_slot_of.reserve(m_context, count * sizeof(std::int32_t));
   m_entries.reserve(m_context, count * 2 * sizeof(std::uint32_t));
   if (pixel_spp > 0) {
-    m_context.launch(m_pixel_counts)
-        .arg(static_cast<cl_int>(m_width))
-        .arg(static_cast<cl_int>(m_height))
-        .arg(static_cast<cl_long>(first))
-        .arg(n)
-        .arg(static_cast<cl_int>(pixel_spp))
-        .arg(static_cast<cl_int>(cells))
-        .arg(m_cell_count)
-        .run(cells);
-    m_scan.exclusive(m_cell_count, cells, m_cell_start);
-    const std::int32_t zero = 0;
-    m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));  // as the sort path leaves it
+    if (first == 0 && count == static_cast<size_t>(m_width) * static_cast<size_t>(m_height) * pixel_spp) {
+      m_context.launch(m_pixel_starts)
+          .arg(static_cast<cl_int>(m_width))
+          .arg(static_cast<cl_int>(m_height))
+          .arg(static_cast<cl_int>(pixel_spp))
+          .arg(static_cast<cl_int>(cells))
+          .arg(m_cell_start)
+          .run(cells + 1);
+    } else {
+      m_context.launch(m_pixel_counts)
+          .arg(static_cast<cl_int>(m_width))
+          .arg(static_cast<cl_int>(m_height))
+          .arg(at)
+          .arg(n)
+          .arg(static_cast<cl_int>(pixel_spp))
+          .arg(static_cast<cl_int>(cells))
+          .arg(m_cell_count)
+          .run(cells);
+      m_scan.exclusive(m_cell_count, cells, m_cell_start);
+      const std::int32_t zero = 0;
+      m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));  // as the sort path leaves it
+    }
     m_context.launch(m_pixel_scatter)
         .arg(m_camera)
         .arg(xy)
-        .arg(static_cast<cl_long>(first))
-        .arg(static_cast<cl_int>(cells))
+        .arg(at)
+        .arg(n)
         .arg(static_cast<cl_int>(pixel_spp))
         .arg(m_cell_start)
         .arg(m_sorted)
-        .run(cells);
+        .run(count);
   } else {
     m_context.launch(m_count_cells).arg(m_camera).arg(xy).arg(at).arg(n).arg(m_cell_count).run(count);
     m_scan.exclusive(m_cell_count, cells, m_cell_start);
@@ -184,7 +196,7 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
   geometry.bind(resolve)
       .arg(static_cast<cl_int>(count))
       .arg(static_cast<cl_int>(m_pixel_spp))
-      .arg(static_cast<cl_long>(m_batch_first))
+      .arg(static_cast<cl_int>(m_batch_first))
       .arg(m_cell_start)
       .arg(m_slot_of)
       .arg(m_sorted)

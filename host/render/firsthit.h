@@ -61,7 +61,7 @@ class FirstHitPass {
   ZBufferAtomics m_atomics;
   DeviceScan m_scan;
   cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_counts = nullptr,
-            m_pixel_scatter = nullptr, m_bound = nullptr, m_emit = nullptr,
+            m_pixel_starts = nullptr, m_pixel_scatter = nullptr, m_bound = nullptr, m_emit = nullptr,
             m_raster = nullptr, m_resolve = nullptr;
   bool m_wide = false;
   int m_width = 0, m_height = 0;
