@@ -118,6 +118,8 @@ std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<Object
   if (options.kdop_objects && kind != AccelKind::None) accel->kernel_options += " -DPRISM_OBJECT_KDOP";
   // Moving objects' code is compiled only into the programs of scenes that have some.
   if (anyMoving(objects)) accel->kernel_options += " " + std::string(kMotionKernelOption);
+  // So is each larger kind's (quadrics, polygons, polyhedra, patches).
+  accel->kernel_options += " " + kindsKernelOption(objects);
   accel->stats.bytes = accel->nodes.size() * sizeof(AccelWord) + accel->packets.size() * sizeof(TriPacketGpu) +
                        accel->unbounded.size() * sizeof(std::int32_t);
   accel->stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

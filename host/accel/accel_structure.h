@@ -60,8 +60,8 @@ struct alignas(16) AccelWord {
 struct DeviceAccel {
   AccelKind kind = AccelKind::None;
   // Build options for extend.cl / occlude.cl: -DPRISM_ACCEL_<KIND>, the
-  // traversal stack depth this tree needs, and kMotionKernelOption when some
-  // primitive moves.
+  // traversal stack depth this tree needs, kMotionKernelOption when some
+  // primitive moves, and the kinds to compile (kindsKernelOption).
   std::string kernel_options;
   // Words 0 and 1: the scene box of the bounded primitives (lo xyz, hi xyz);
   // from word 2: the structure's nodes (BvhNodeGpu, OctreeNodeGpu, BspNodeGpu).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "kernels/shared/mesh_gpu.h"
 #include "kernels/shared/motion_gpu.h"
@@ -296,6 +297,14 @@ std::size_t primitiveCount(const std::vector<ObjectGpu>& objects) {
          objects[n].type != OBJECT_MESH)
     ++n;
   return n;
+}
+
+std::string kindsKernelOption(const std::vector<ObjectGpu>& objects) {
+  unsigned kinds = 1u << OBJECT_SPHERE | 1u << OBJECT_BOX | 1u << OBJECT_PLANE | 1u << OBJECT_TRIANGLE;
+  const std::size_t count = primitiveCount(objects);
+  for (std::size_t i = 0; i < count; ++i)
+    if (objects[i].type >= 0 && objects[i].type < 32) kinds |= 1u << objects[i].type;
+  return "-DPRISM_KINDS=" + std::to_string(kinds);
 }
 
 bool anyMoving(const std::vector<ObjectGpu>& objects) {

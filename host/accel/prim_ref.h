@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "kernels/shared/object_gpu.h"
@@ -42,5 +43,9 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects);
 std::size_t primitiveCount(const std::vector<ObjectGpu>& objects);
 // Whether some primitive moves (the kernels then need kMotionKernelOption).
 bool anyMoving(const std::vector<ObjectGpu>& objects);
+// The build option naming the primitive kinds the kernels must intersect
+// (-DPRISM_KINDS, kernels/geometry/object.h): spheres, boxes, planes and
+// triangles always, the larger kinds only where the scene has some.
+std::string kindsKernelOption(const std::vector<ObjectGpu>& objects);
 
 }  // namespace prism

@@ -57,12 +57,12 @@ KernelFeatures kernelFeatures(const Scene& scene, const GpuScene& gpu) {
 }  // namespace
 
 Renderer::Renderer(Context& context) : m_context(context) {
-  m_count = context.kernel("count_rays.cl", "count_rays");
-  m_scan = context.kernel("scan_blocks.cl", "scan_blocks");
-  m_scatter = context.kernel("scatter_rays.cl", "scatter_rays");
-  m_accumulate = context.kernel("accumulate.cl", "accumulate");
-  m_supersample = context.kernel("supersample.cl", "supersample");
-  m_resolve = context.kernel("resolve.cl", "resolve");
+  m_count = context.kernel(kRenderLoopProgram, "count_rays");
+  m_scan = context.kernel(kRenderLoopProgram, "scan_blocks");
+  m_scatter = context.kernel(kRenderLoopProgram, "scatter_rays");
+  m_accumulate = context.kernel(kRenderLoopProgram, "accumulate");
+  m_supersample = context.kernel(kRenderLoopProgram, "supersample");
+  m_resolve = context.kernel(kRenderLoopProgram, "resolve");
 }
 
 Renderer::~Renderer() = default;

@@ -253,7 +253,7 @@ std::vector<float> samplePositions(Context& context, const SamplingOptions& opti
   Buffer tile(context, tile_xy.size() * sizeof(float));
   tile.writeVector(tile_xy);
   Buffer xy(context, 2 * total * sizeof(float)), aov(context, total * sizeof(std::int32_t));
-  context.launch(context.kernel("supersample.cl", "supersample"))
+  context.launch(context.kernel(kRenderLoopProgram, "supersample"))
       .arg(static_cast<cl_int>(options.mode))
       .arg(static_cast<cl_int>(width))
       .arg(static_cast<cl_int>(height))
@@ -285,7 +285,7 @@ std::vector<float> resolveSamples(Context& context, const SamplingOptions& optio
   xy.writeVector(sample_xy);
   rad.writeVector(radiance);
   Buffer film(context, 4 * pixels * sizeof(float));
-  context.launch(context.kernel("resolve.cl", "resolve"))
+  context.launch(context.kernel(kRenderLoopProgram, "resolve"))
       .arg(static_cast<cl_int>(options.mode))
       .arg(static_cast<cl_int>(options.effectiveFilter()))
       .arg(static_cast<cl_int>(width))

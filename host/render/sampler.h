@@ -14,6 +14,10 @@
 
 namespace prism {
 
+// The program that holds the render loop's small kernels, supersample and
+// resolve among them (kernels/render_loop.cl): one build instead of six.
+constexpr const char* kRenderLoopProgram = "render_loop.cl";
+
 // Support radius in pixels: box 0.5, tent 1, gaussian 1.5, mitchell 2.
 double filterRadius(FilterKind kind);
 

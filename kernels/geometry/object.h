@@ -8,17 +8,36 @@
 #define PRISM_GEOMETRY_OBJECT_H
 
 #include "common/math.h"
-#include "geometry/box.h"
-#include "geometry/motion.h"
-#include "geometry/patch.h"
-#include "geometry/plane.h"
-#include "geometry/polygon.h"
-#include "geometry/polyhedron.h"
-#include "geometry/quadric.h"
-#include "geometry/sphere.h"
-#include "geometry/triangle.h"
 #include "shared/hit_gpu.h"
 #include "shared/object_gpu.h"
+
+/* The kinds compiled in, bit k for OBJECT_k. The host passes the scene's
+ * (-DPRISM_KINDS, host: kindsKernelOption), so the programs of a scene without
+ * quadrics, polygons, polyhedra or patches leave their code out: PoCL's build
+ * time grows with the code, and a cold start pays it. Spheres, boxes, planes
+ * and triangles are small and always in; without the option, every kind is. */
+#ifndef PRISM_KINDS
+#define PRISM_KINDS 0xff
+#endif
+#define PRISM_HAS_KIND(kind) ((PRISM_KINDS >> (kind)) & 1)
+
+#include "geometry/box.h"
+#include "geometry/motion.h"
+#include "geometry/plane.h"
+#include "geometry/sphere.h"
+#include "geometry/triangle.h"
+#if PRISM_HAS_KIND(OBJECT_PATCH)
+#include "geometry/patch.h"
+#endif
+#if PRISM_HAS_KIND(OBJECT_POLYGON)
+#include "geometry/polygon.h"
+#endif
+#if PRISM_HAS_KIND(OBJECT_POLYHEDRON)
+#include "geometry/polyhedron.h"
+#endif
+#if PRISM_HAS_KIND(OBJECT_QUADRIC)
+#include "geometry/quadric.h"
+#endif
 
 inline float3 xform_vector(const float* m, float3 v) {
   return (float3)(m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
@@ -74,6 +93,7 @@ inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, f
       return plane_intersect(o, d, tmin, tmax, load3g(p), load3g(p + 3), t);
     case OBJECT_TRIANGLE:
       return triangle_intersect(o, d, tmin, tmax, load3g(p), load3g(p + 3), load3g(p + 6), t, u, v);
+#if PRISM_HAS_KIND(OBJECT_QUADRIC)
     case OBJECT_QUADRIC: { /* u carries the surface hit (QUADRIC_SURFACE or a cap) to object_surface */
       int face;
       bool hit = quadric_intersect(o, d, tmin, tmax, p, object_side_data(ob), (ob->flags & OBJECT_FLAG_CAPPED) != 0,
@@ -81,16 +101,23 @@ inline bool object_intersect(__global const ObjectGpu* ob, float3 o, float3 d, f
       *u = (float)face;
       return hit;
     }
+#endif
+#if PRISM_HAS_KIND(OBJECT_POLYGON)
     case OBJECT_POLYGON:
       return polygon_intersect(o, d, tmin, tmax, p, object_side_data(ob), t);
+#endif
+#if PRISM_HAS_KIND(OBJECT_POLYHEDRON)
     case OBJECT_POLYHEDRON: { /* u carries the plane hit to object_surface */
       int face;
       bool hit = polyhedron_intersect(o, d, tmin, tmax, (int)p[0], object_side_data(ob), t, &face);
       *u = (float)face;
       return hit;
     }
+#endif
+#if PRISM_HAS_KIND(OBJECT_PATCH)
     case OBJECT_PATCH:
       return patch_intersect(o, d, tmin, tmax, p, object_side_data(ob), t, u, v);
+#endif
   }
   return false;
 }
@@ -122,24 +149,32 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
       n = load3g(q + 3);
       if (want_uv) *uv = plane_uv(p, load3g(q), n);
       break;
+#if PRISM_HAS_KIND(OBJECT_QUADRIC)
     case OBJECT_QUADRIC: {
       int face = (int)hit.u;
       n = quadric_normal(q, p, face);
       if (want_uv) *uv = quadric_uv(p, object_side_data(ob), face);
       break;
     }
+#endif
+#if PRISM_HAS_KIND(OBJECT_POLYGON)
     case OBJECT_POLYGON:
       n = load3g(q);
       if (want_uv) *uv = polygon_uv(q, p);
       break;
+#endif
+#if PRISM_HAS_KIND(OBJECT_POLYHEDRON)
     case OBJECT_POLYHEDRON:
       n = load3g(object_side_data(ob) + 4 * (int)hit.u);
       if (want_uv) *uv = polyhedron_uv(p, n);
       break;
+#endif
+#if PRISM_HAS_KIND(OBJECT_PATCH)
     case OBJECT_PATCH:
       n = patch_normal(object_side_data(ob), hit.u, hit.v);
       if (want_uv) *uv = patch_uv(q, hit.u, hit.v);
       break;
+#endif
     default: /* a triangle record (a mesh's triangles are compact: geometry/primitive.h) */
       n = triangle_normal(load3g(q), load3g(q + 3), load3g(q + 6));
       *uv = (float2)(hit.u, hit.v);

@@ -1,0 +1,10 @@
+/* render_loop: the render loop's small kernels built as one program. Each
+ * keeps its own file; a cold start builds this once where it would build six
+ * programs, and PoCL pays about a quarter of a second per program built on top
+ * of what their code costs (docs/architecture.md, "Kernel programs"). */
+#include "count_rays.cl"
+#include "scan_blocks.cl"
+#include "scatter_rays.cl"
+#include "accumulate.cl"
+#include "supersample.cl"
+#include "resolve.cl"
