@@ -443,6 +443,7 @@ typedef struct PrismRenderOptions {
   uint32_t inside_test; /* a PrismInsideTest: for polygons that name none */
   uint32_t shadows;     /* a PrismShadows: point lights' feelers */
   uint32_t bounds;      /* a PrismBounds: the BVH children's bounds */
+  uint32_t check_nan;   /* nonzero: watch the film for NaN and infinity (prismGetNanReport); 0 by default */
 } PrismRenderOptions;
 
 /* Fills `options` with the scene's own settings (film and render blocks). */
@@ -474,6 +475,26 @@ typedef struct PrismRenderStats {
 PRISM_API PrismStatus prismGetKernelTimeCount(PrismContext context, uint32_t* count);
 PRISM_API PrismStatus prismGetKernelTime(PrismContext context, uint32_t index, const char** name, double* seconds,
                                          uint64_t* launches);
+
+/* After prismRender with options->check_nan set: the first contribution to the
+ * film that was not finite (NaN or infinite), in render order (chunk by chunk of
+ * the sample sequence, in a chunk depth by depth, lowest sample first), and the
+ * ray that brought it. found is 0 when every contribution was finite.
+ * PRISM_ERROR_INVALID_OPERATION unless the context's last prismRender had it. */
+typedef struct PrismNanReport {
+  size_t struct_size;      /* sizeof(PrismNanReport); set by the caller */
+  uint32_t found;          /* 1: the fields below describe it */
+  uint64_t sample;         /* the primary sample's index in the image's sample sequence */
+  float film_x, film_y;    /* its film position: pixel (floor(film_x), floor(film_y)) */
+  uint32_t ray_kind;       /* 0 primary, 1 reflected, 2 refracted, 3 shadow */
+  uint32_t ray_depth;      /* 0 for the primary ray */
+  float origin[3];
+  float direction[3];
+  int32_t primitive;       /* the primitive the ray hit, -1 for none or a shadow ray */
+  float t;                 /* distance to that hit along the ray */
+  float value[4];          /* the contribution: r, g, b and coverage */
+} PrismNanReport;
+PRISM_API PrismStatus prismGetNanReport(PrismContext context, PrismNanReport* report);
 
 /* The checks prismRender makes of `options` before any work (sizes, samples,
  * depth, weights, sampling modes), with the same status and message: call it

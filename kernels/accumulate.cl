@@ -2,12 +2,19 @@
  * (4 floats per key: in a render, one entry per primary sample). The first
  * work-item of each run of equal keys sums the run in queue order, so each entry
  * has one writer per launch and the sum is the same on every run (float atomics
- * would make the order, and so the image, vary). */
+ * would make the order, and so the image, vary).
+ *
+ * first_bad: the lowest queue index whose contribution is not finite (NaN or
+ * inf) is kept there by an atomic minimum; the host reads it back only for a
+ * render with check_nan, and then reads that contribution's ray (the queue is
+ * sorted by key, so the lowest index is the lowest sample key). */
 #include "shared/contribution_gpu.h"
 
-__kernel void accumulate(__global const ContributionGpu* c, int count, __global float* film) {
+__kernel void accumulate(__global const ContributionGpu* c, int count, __global float* film,
+                         __global int* first_bad) {
   int k = get_global_id(0);
   if (k >= count) return;
+  if (!(isfinite(c[k].r) && isfinite(c[k].g) && isfinite(c[k].b) && isfinite(c[k].a))) atomic_min(first_bad, k);
   int key = c[k].pixel;
   if (k > 0 && c[k - 1].pixel == key) return;
   float4 sum = (float4)(0.0f);

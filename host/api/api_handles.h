@@ -16,6 +16,7 @@ struct PrismContextImpl {
   std::unique_ptr<prism::Renderer> renderer;  // built on first render
   prism::RenderResult last;                   // AOVs of the last render
   bool has_render = false;
+  bool last_check_nan = false;  // the last render watched for NaN (prismGetNanReport)
   PrismProgressFn progress = nullptr;
   void* progress_user = nullptr;
   // The ray-query engine of the last prismIntersect / prismOccluded, reused while

@@ -97,6 +97,7 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   r.aa_threshold = o.aa_threshold;
   r.aa_max_level = static_cast<int>(std::min<uint32_t>(o.aa_max_level, std::numeric_limits<int>::max()));
   r.profile = o.profile != 0;
+  r.check_nan = o.check_nan != 0;
   return r;
 }
 
@@ -305,6 +306,7 @@ PRISM_API PrismStatus prismGetRenderOptions(PrismScene scene, PrismRenderOptions
   options->bounds = bounds;
   options->aa_threshold = static_cast<float>(r.aa_threshold);
   options->aa_max_level = static_cast<uint32_t>(r.aa_max_level);
+  options->check_nan = r.check_nan ? 1u : 0u;
   return PRISM_OK;
 }
 
@@ -329,11 +331,40 @@ PRISM_API PrismStatus prismRender(PrismContext context, PrismScene scene, const 
     context->has_render = false;
     context->last = renderScene(context, scene, options);
     context->has_render = true;
+    context->last_check_nan = options && options->check_nan != 0;
     const RenderResult& r = context->last;
     std::memcpy(rgba, r.rgba.data(), r.rgba.size() * sizeof(float));
     if (stats) fillStats(r.stats, context->context->takeBuildSeconds(), stats);
     return PRISM_OK;
   });
+}
+
+PRISM_API PrismStatus prismGetNanReport(PrismContext context, PrismNanReport* report) {
+  PRISM_REQUIRE(context && report, "prismGetNanReport: NULL argument");
+  PRISM_REQUIRE(report->struct_size >= sizeof(PrismNanReport),
+                "prismGetNanReport: report->struct_size must be set to sizeof(PrismNanReport)");
+  if (!context->has_render || !context->last_check_nan)
+    return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetNanReport: no render with check_nan yet (set PrismRenderOptions.check_nan)");
+  const size_t size = report->struct_size;
+  std::memset(report, 0, size);
+  report->struct_size = size;
+  report->primitive = -1;
+  const std::optional<NanFinding>& nan = context->last.stats.nan;
+  if (!nan) return PRISM_OK;
+  report->found = 1;
+  report->sample = nan->sample;
+  report->film_x = nan->film_x;
+  report->film_y = nan->film_y;
+  report->ray_kind = static_cast<uint32_t>(nan->ray_kind);
+  report->ray_depth = static_cast<uint32_t>(nan->depth);
+  for (int i = 0; i < 3; ++i) {
+    report->origin[i] = nan->origin[i];
+    report->direction[i] = nan->direction[i];
+  }
+  report->primitive = nan->prim;
+  report->t = nan->t;
+  for (int i = 0; i < 4; ++i) report->value[i] = nan->value[i];
+  return PRISM_OK;
 }
 
 PRISM_API PrismStatus prismGetKernelTimeCount(PrismContext context, uint32_t* count) {

@@ -11,6 +11,7 @@ namespace prism_cli {
 constexpr int kExitOk = 0;
 constexpr int kExitFailure = 1;      // the work failed: bad scene, no device, write error
 constexpr int kExitUsage = 2;        // the command line was wrong
+constexpr int kExitNotFinite = 3;    // render --check-nan found NaN or infinity (the image is written)
 constexpr int kExitInterrupted = 130;  // Ctrl-C, as shells report SIGINT
 
 int runDevices(const std::vector<std::string>& args);

@@ -162,6 +162,9 @@ Device:
 Messages:
   --stats           after the summary, where the render's time went: set-up (kernels,
                     structure) and tracing, and each kernel's device time (profiled)
+  --check-nan       watch every ray's contribution for NaN and infinity; name the first
+                    (its sample, pixel, ray and hit) and the first such pixel of the
+                    image, and exit with 3 if there is one (the image is still written)
   --quiet           no progress bar and no summary line (warnings and errors still
                     go to stderr)
   -h, --help        this help

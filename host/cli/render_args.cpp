@@ -18,7 +18,7 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--focus-distance", "", true}, {"--stats", "", false},
     {"--aa", "", true},        {"--filter", "", true},    {"--aa-threshold", "", true},
     {"--aa-max-level", "", true}, {"--first-hit", "", true}, {"--inside-test", "", true},
-    {"--shadows", "", true},   {"--bounds", "", true},
+    {"--shadows", "", true},   {"--bounds", "", true},    {"--check-nan", "", false},
 };
 
 // The same list as the library's image writer, checked here so that a typo in -o
@@ -82,6 +82,7 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
   request.use_kernel_cache = !parsed.has("--no-cache");
   request.quiet = parsed.has("--quiet");
   request.stats = parsed.has("--stats");
+  request.check_nan = parsed.has("--check-nan");
 
   if (const auto aov_name = parsed.text("--aov")) {
     PrismAov aov;

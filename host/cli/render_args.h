@@ -37,6 +37,7 @@ struct RenderRequest {
   bool use_kernel_cache = true;
   bool quiet = false;
   bool stats = false;  // --stats: where the render's time went
+  bool check_nan = false;  // --check-nan: name the first non-finite value and its ray
 };
 
 // Throws UsageError naming the option at fault.

@@ -71,6 +71,7 @@ std::vector<Override> overridesOf(const RenderRequest& request) {
   add(r.shadows.has_value(), "--shadows", [&r](PrismRenderOptions& o) { o.shadows = *r.shadows; });
   add(r.bounds.has_value(), "--bounds", [&r](PrismRenderOptions& o) { o.bounds = *r.bounds; });
   add(r.stats, "--stats", [](PrismRenderOptions& o) { o.profile = 1; });
+  add(r.check_nan, "--check-nan", [](PrismRenderOptions& o) { o.check_nan = 1; });
   return out;
 }
 
@@ -237,6 +238,43 @@ void printStageTimes(PrismContext context, const PrismRenderStats& stats) {
               stats.trace_seconds > 0 ? 100.0 * rest / stats.trace_seconds : 0.0);
 }
 
+// --check-nan: the first non-finite contribution with its ray, and the first
+// pixel of the image that is not finite. Returns whether either was found.
+bool reportNotFinite(PrismContext context, const PrismRenderOptions& options, const std::vector<float>& rgba) {
+  static const char* const kKinds[] = {"primary", "reflected", "refracted", "shadow"};
+  PrismNanReport report{};
+  report.struct_size = sizeof report;
+  if (prismGetNanReport(context, &report) != PRISM_OK) {
+    printError(lastErrorForUser());
+    return true;
+  }
+  if (report.found) {
+    const char* kind = report.ray_kind < 4 ? kKinds[report.ray_kind] : "?";
+    std::fprintf(stderr,
+                 "prism: check-nan: sample %llu (film %.4g, %.4g; pixel %d, %d) got (%g, %g, %g, %g) from a %s ray at "
+                 "depth %u, origin (%.9g, %.9g, %.9g), direction (%.9g, %.9g, %.9g)",
+                 static_cast<unsigned long long>(report.sample), report.film_x, report.film_y,
+                 static_cast<int>(std::floor(report.film_x)), static_cast<int>(std::floor(report.film_y)),
+                 report.value[0], report.value[1], report.value[2], report.value[3], kind, report.ray_depth,
+                 report.origin[0], report.origin[1], report.origin[2], report.direction[0], report.direction[1],
+                 report.direction[2]);
+    if (report.primitive >= 0)
+      std::fprintf(stderr, ", which hit primitive %d at t = %.9g\n", report.primitive, report.t);
+    else
+      std::fprintf(stderr, "%s\n", report.ray_kind == 3 ? "" : ", which hit nothing");
+  }
+  const size_t pixels = static_cast<size_t>(options.width) * options.height;
+  for (size_t p = 0; p < pixels; ++p) {
+    const float* px = &rgba[4 * p];
+    if (std::isfinite(px[0]) && std::isfinite(px[1]) && std::isfinite(px[2]) && std::isfinite(px[3])) continue;
+    std::fprintf(stderr, "prism: check-nan: pixel %zu, %zu of the image is (%g, %g, %g, %g)\n", p % options.width,
+                 p / options.width, px[0], px[1], px[2], px[3]);
+    return true;
+  }
+  if (!report.found) std::fprintf(stderr, "prism: check-nan: every contribution and pixel is finite\n");
+  return report.found != 0;
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& args) {
@@ -317,6 +355,7 @@ int runRender(const std::vector<std::string>& args) {
   if (written != kExitOk) return written;
   if (!request.quiet) printSummary(request, options, device, stats);
   if (request.stats) printStageTimes(context.get(), stats);
+  if (request.check_nan && reportNotFinite(context.get(), options, rgba)) return kExitNotFinite;
   return kExitOk;
 }
 

@@ -52,6 +52,9 @@ struct RenderOptions {
   // Time every kernel launch on the device (RenderStats::kernels); each launch
   // then keeps an event until the render ends.
   bool profile = false;
+  // Watch every contribution to the film for NaN and infinity, and report the
+  // first with its ray (RenderStats::nan). Costs a read-back per launch.
+  bool check_nan = false;
 
   static RenderOptions fromScene(const Scene& scene);
   // The anti-aliasing mode in effect: `aa`, or by default none at one sample per

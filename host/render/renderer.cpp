@@ -124,6 +124,9 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   const size_t pixels = static_cast<size_t>(options.width) * options.height;
   m_camera = Buffer(m_context, sizeof(CameraGpu));
   m_camera.write(&gpu.camera, sizeof(CameraGpu));
+  const std::int32_t none_bad = std::numeric_limits<std::int32_t>::max();
+  m_first_bad = Buffer(m_context, sizeof none_bad);
+  m_first_bad.write(&none_bad, sizeof none_bad);
   m_geometry.upload(m_context, gpu);
   {
     AccelBuildOptions build = m_accel_build;
@@ -354,6 +357,7 @@ std::vector<float> Renderer::traceFilmPositions(const std::vector<float>& xy,
 }
 
 void Renderer::traceChunk(int first_key, size_t n) {
+  m_chunk_first = first_key;
   m_context.launch(m_generate)
       .arg(m_camera)
       .arg(m_chunk_xy)
@@ -422,7 +426,7 @@ void Renderer::traceSlice(int depth, size_t n, bool have_hits) {
       .arg(m_aov_primid)
       .arg(m_aov_albedo)
       .run(n);
-  accumulate(m_emit, n);
+  accumulate(m_emit, n, m_work, &m_hits);
 
   if (m_shadow_slots > 0) traceShadows(n);
 
@@ -459,7 +463,7 @@ void Renderer::traceShadows(size_t surfaces) {
     KernelLaunch occlude = m_context.launch(m_occlude);
     occlude.arg(m_shadow_queue).arg(static_cast<int>(live));
     m_accel.bind(occlude, m_geometry).arg(m_materials).arg(m_shadow_light).run(live);
-    accumulate(m_shadow_light, live);
+    accumulate(m_shadow_light, live, m_shadow_queue, nullptr);
   }
 }
 
@@ -489,8 +493,39 @@ size_t Renderer::compact(const Buffer& in, const Buffer& tags, size_t count, Buf
   return static_cast<size_t>(total);
 }
 
-void Renderer::accumulate(const Buffer& contributions, size_t count) {
-  m_context.launch(m_accumulate).arg(contributions).arg(static_cast<int>(count)).arg(m_film).run(count);
+void Renderer::accumulate(const Buffer& contributions, size_t count, const Buffer& rays, const Buffer* hits) {
+  m_context.launch(m_accumulate)
+      .arg(contributions)
+      .arg(static_cast<int>(count))
+      .arg(m_film)
+      .arg(m_first_bad)
+      .run(count);
+  if (!m_options->check_nan || m_stats->nan) return;
+  std::int32_t k = 0;
+  m_first_bad.read(&k, sizeof k);
+  if (k == std::numeric_limits<std::int32_t>::max()) return;
+  ContributionGpu c;
+  contributions.read(&c, sizeof c, static_cast<size_t>(k) * sizeof c);
+  RayGpu ray;
+  rays.read(&ray, sizeof ray, static_cast<size_t>(k) * sizeof ray);
+  NanFinding f;
+  f.sample = static_cast<std::uint64_t>(ray.pixel);
+  f.ray_kind = ray.kind;
+  f.depth = ray.depth;
+  f.origin = {ray.ox, ray.oy, ray.oz};
+  f.direction = {ray.dx, ray.dy, ray.dz};
+  f.value = {c.r, c.g, c.b, c.a};
+  if (hits) {
+    HitGpu hit;
+    hits->read(&hit, sizeof hit, static_cast<size_t>(k) * sizeof hit);
+    f.prim = hit.prim;
+    f.t = hit.t;
+  }
+  float xy[2] = {0, 0};
+  m_chunk_xy.read(xy, sizeof xy, static_cast<size_t>(ray.pixel - m_chunk_first) * sizeof xy);
+  f.film_x = xy[0];
+  f.film_y = xy[1];
+  m_stats->nan = f;
 }
 
 void Renderer::zeroFill(Buffer& buffer, size_t bytes) {

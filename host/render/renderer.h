@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -23,6 +24,21 @@
 #include "scene/scene.h"
 
 namespace prism {
+
+// With RenderOptions::check_nan: the first contribution to the film that was not
+// finite (NaN or infinite), in render order (chunk by chunk of the sample
+// sequence, and in a chunk depth by depth, lowest sample first), with the ray
+// that brought it.
+struct NanFinding {
+  std::uint64_t sample = 0;     // the film key: the primary sample's index in the image
+  float film_x = 0, film_y = 0; // its film position (pixel floor(x), floor(y))
+  int ray_kind = 0;             // RAY_KIND_*
+  int depth = 0;
+  std::array<float, 3> origin{}, direction{};
+  int prim = -1;                // what the ray hit (-1: nothing, or a shadow ray)
+  float t = 0;
+  std::array<float, 4> value{}; // the contribution: rgb and coverage
+};
 
 struct RenderStats {
   double seconds = 0;
@@ -43,6 +59,7 @@ struct RenderStats {
   // building (or loading) kernels, uploads. The rest of `seconds` is tracing.
   double setup_seconds = 0;
   std::vector<KernelTime> kernels;   // with RenderOptions::profile: device time per kernel, longest first
+  std::optional<NanFinding> nan;     // with RenderOptions::check_nan, where one was found
 
   std::uint64_t totalRays() const { return rays_by_kind[0] + rays_by_kind[1] + rays_by_kind[2] + rays_by_kind[3]; }
 };
@@ -129,7 +146,9 @@ class Renderer {
   // The area lights' feelers of the slice's shaded points in m_surfaces: spawned in
   // runs, compacted, traced by occlude, their light added into m_film.
   void traceShadows(size_t surfaces);
-  void accumulate(const Buffer& contributions, size_t count);
+  // Adds `count` contributions into m_film; with check_nan, the first that is
+  // not finite is recorded with its ray (from `rays`) and hit (`hits`, or none).
+  void accumulate(const Buffer& contributions, size_t count, const Buffer& rays, const Buffer* hits);
   // Throws FilmTooLarge unless `samples` per-sample film entries (and their
   // positions when `with_positions`) fit the device beside everything else.
   void checkFilmFits(std::uint64_t samples, bool with_positions) const;
@@ -164,6 +183,8 @@ class Renderer {
   Buffer m_zbuffer_xy;  // adaptive sampling: the positions of the Z-buffer's batch
   size_t m_zbuffer_first = 0;  // the chunk's first sample within the Z-buffer's batch
   Buffer m_chunk_xy, m_chunk_aov, m_tile, m_pixels;
+  int m_chunk_first = 0;  // the key of m_chunk_xy's first position
+  Buffer m_first_bad;     // accumulate's lowest queue index of a non-finite contribution
   std::vector<Buffer> m_levels;  // queue of each depth >= 1, up to 2 * kSliceRays rays
   // m_child_tags, m_shadow_tags: the slot tags of m_children and m_shadows
   // (kernels/shared/ray_gpu.h).

@@ -4,7 +4,7 @@ and the exception each status becomes. Nothing here is public."""
 
 import ctypes
 import os
-from ctypes import (CFUNCTYPE, POINTER, Structure, c_char, c_char_p, c_double, c_float, c_int, c_size_t,
+from ctypes import (CFUNCTYPE, POINTER, Structure, c_char, c_char_p, c_double, c_float, c_int, c_int32, c_size_t,
                     c_uint32, c_uint64, c_void_p)
 
 
@@ -47,7 +47,13 @@ class RenderOptions(Structure):
                 ("max_depth", c_uint32), ("min_weight", c_float), ("seed", c_uint64), ("accel", c_uint32),
                 ("aa", c_uint32), ("filter", c_uint32), ("first_hit", c_uint32), ("aa_threshold", c_float),
                 ("aa_max_level", c_uint32), ("profile", c_uint32), ("inside_test", c_uint32), ("shadows", c_uint32),
-                ("bounds", c_uint32)]
+                ("bounds", c_uint32), ("check_nan", c_uint32)]
+
+
+class NanReport(Structure):
+    _fields_ = [("struct_size", c_size_t), ("found", c_uint32), ("sample", c_uint64), ("film_x", c_float),
+                ("film_y", c_float), ("ray_kind", c_uint32), ("ray_depth", c_uint32), ("origin", float3),
+                ("direction", float3), ("primitive", c_int32), ("t", c_float), ("value", c_float * 4)]
 
 
 class RenderStats(Structure):
@@ -124,6 +130,7 @@ _FUNCTIONS = {
     "prismCheckRenderOptions": (Status, [POINTER(RenderOptions)]),
     "prismRender": (Status, [c_void_p, c_void_p, POINTER(RenderOptions), c_void_p, POINTER(RenderStats)]),
     "prismGetAov": (Status, [c_void_p, c_uint32, c_void_p, c_size_t]),
+    "prismGetNanReport": (Status, [c_void_p, POINTER(NanReport)]),
     "prismIntersect": (Status, [c_void_p, c_void_p, c_uint32, c_void_p, c_void_p, c_size_t, POINTER(c_double)]),
     "prismOccluded": (Status, [c_void_p, c_void_p, c_uint32, c_void_p, c_void_p, c_size_t, POINTER(c_double)]),
     "prismWriteImage": (Status, [c_char_p, c_void_p, c_uint32, c_uint32, c_uint32]),

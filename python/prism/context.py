@@ -17,7 +17,8 @@ assert RAY_DTYPE.itemsize == 32 and HIT_DTYPE.itemsize == 16
 _ENUM_OPTIONS = {"accel": lib.prismParseAccel, "aa": lib.prismParseAa, "filter": lib.prismParseFilter,
                  "first_hit": lib.prismParseFirstHit, "inside_test": lib.prismParseInsideTest,
                  "shadows": lib.prismParseShadows, "bounds": lib.prismParseBounds}
-_PLAIN_OPTIONS = ("width", "height", "spp", "max_depth", "min_weight", "seed", "aa_threshold", "aa_max_level")
+_PLAIN_OPTIONS = ("width", "height", "spp", "max_depth", "min_weight", "seed", "aa_threshold", "aa_max_level",
+                  "check_nan")
 
 
 def devices():
@@ -119,7 +120,8 @@ class Context:
     def render(self, scene, aovs=(), progress=None, **options):
         """Renders `scene`; returns a Render. `options`: width, height, spp,
         max_depth, min_weight, seed, accel, aa, filter, first_hit, inside_test,
-        shadows, bounds, aa_threshold, aa_max_level (the scene's own where not given). `aovs`: names among depth,
+        shadows, bounds, aa_threshold, aa_max_level (the scene's own where not given), check_nan (True: the
+        stats' "nan" is None or the first non-finite contribution and its ray). `aovs`: names among depth,
         normal, primid, albedo. `progress(fraction)` is called as the render goes;
         return True from it to cancel (prism.Cancelled is raised)."""
         o = self.options(scene, **options)
@@ -145,7 +147,22 @@ class Context:
         if raised:
             raise raised[0]
         check(status)
-        return Render(rgba, {name: self._aov(name, o) for name in aovs}, _stats_dict(stats))
+        stats_dict = _stats_dict(stats)
+        if o.check_nan:
+            stats_dict["nan"] = self._nan_report()
+        return Render(rgba, {name: self._aov(name, o) for name in aovs}, stats_dict)
+
+    def _nan_report(self):
+        r = _capi.NanReport()
+        r.struct_size = ctypes.sizeof(r)
+        check(lib.prismGetNanReport(self._handle, ctypes.byref(r)))
+        if not r.found:
+            return None
+        kinds = ("primary", "reflected", "refracted", "shadow")
+        return {"sample": r.sample, "film": (r.film_x, r.film_y),
+                "ray_kind": kinds[r.ray_kind] if r.ray_kind < 4 else "?", "ray_depth": r.ray_depth,
+                "origin": tuple(r.origin), "direction": tuple(r.direction), "primitive": r.primitive, "t": r.t,
+                "value": tuple(r.value)}
 
     def _aov(self, name, o):
         which = _capi.enum_value(lib.prismParseAov, name, "aov")

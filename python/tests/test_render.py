@@ -223,3 +223,11 @@ def test_kdop_bounds_render_the_boxes_image(ctx, scenes_dir):
     assert np.array_equal(a.rgba, b.rgba)
     with pytest.raises(prism.Error, match="unknown bounds"):
         ctx.render(scene, bounds="obb")
+
+
+def test_check_nan_reports_none_on_a_plain_scene(ctx, scenes_dir):
+    scene = prism.Scene.load(os.path.join(scenes_dir, "whitted.json"))
+    r = ctx.render(scene, width=32, height=24, check_nan=True)
+    assert np.isfinite(r.rgba).all()
+    assert r.stats["nan"] is None
+    assert "nan" not in ctx.render(scene, width=32, height=24).stats

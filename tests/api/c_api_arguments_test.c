@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   PrismPluginCandidateInfo plugin;
   PrismRenderOptions opts, small;
   PrismRenderStats stats;
+  PrismNanReport nan_report;
   PrismAccel accel;
   PrismAa aa;
   PrismFilter filter;
@@ -231,6 +232,9 @@ int main(int argc, char** argv) {
   /* Rendering, in and out of order. */
   EXPECT(prismGetAov(ctx, PRISM_AOV_DEPTH, out, 8 * 6), PRISM_ERROR_INVALID_OPERATION, "prismGetAov");
   EXPECT(prismGetKernelTimeCount(ctx, &u32), PRISM_ERROR_INVALID_OPERATION, "prismGetKernelTimeCount");
+  memset(&nan_report, 0, sizeof nan_report);
+  nan_report.struct_size = sizeof nan_report;
+  EXPECT(prismGetNanReport(ctx, &nan_report), PRISM_ERROR_INVALID_OPERATION, "prismGetNanReport");
   BAD(prismGetRenderOptions(NULL, &opts), "prismGetRenderOptions");
   BAD(prismGetRenderOptions(scene, NULL), "prismGetRenderOptions");
   memset(&opts, 0, sizeof opts);
@@ -258,6 +262,19 @@ int main(int argc, char** argv) {
   stats.struct_size = 0;
   BAD(prismRender(ctx, scene, &small, rgba, &stats), "prismRender");
   CHECK_OK(prismRender(ctx, scene, &small, rgba, NULL));
+  EXPECT(prismGetNanReport(ctx, &nan_report), PRISM_ERROR_INVALID_OPERATION,
+         "prismGetNanReport"); /* the render did not check */
+  small.check_nan = 1;
+  CHECK_OK(prismRender(ctx, scene, &small, rgba, NULL));
+  small.check_nan = 0;
+  BAD(prismGetNanReport(NULL, &nan_report), "prismGetNanReport");
+  BAD(prismGetNanReport(ctx, NULL), "prismGetNanReport");
+  nan_report.struct_size = 0;
+  BAD(prismGetNanReport(ctx, &nan_report), "prismGetNanReport");
+  nan_report.struct_size = sizeof nan_report;
+  nan_report.found = 7;
+  CHECK_OK(prismGetNanReport(ctx, &nan_report));
+  CHECK(nan_report.found == 0 && nan_report.primitive == -1); /* a plain scene: every value finite */
   BAD(prismGetAov(NULL, PRISM_AOV_DEPTH, out, 8 * 6), "prismGetAov");
   BAD(prismGetAov(ctx, PRISM_AOV_DEPTH, NULL, 8 * 6), "prismGetAov");
   BAD(prismGetAov(ctx, PRISM_AOV_NORMAL, out, 8 * 6), "prismGetAov"); /* needs 3 floats a pixel */

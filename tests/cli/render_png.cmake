@@ -70,6 +70,12 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "prism: stages: set-up [0-9.]+ s \\(kernels
   message(FATAL_ERROR "--stats exited ${rc} or printed no stage table:\n${out}${err}")
 endif()
 
+# --check-nan on a plain scene: nothing found, said so, exit 0.
+run_prism(render "${scene}" -o "${WORK_DIR}/checked.png" ${size} --check-nan --quiet)
+if(NOT rc EQUAL 0 OR NOT err MATCHES "check-nan: every contribution and pixel is finite")
+  message(FATAL_ERROR "--check-nan on a plain scene exited ${rc}:\n${out}${err}")
+endif()
+
 run_prism(render "${scene}" -o "${WORK_DIR}/depth.png" ${size} --aov depth --quiet)
 if(rc EQUAL 0)
   message(FATAL_ERROR "the depth AOV to PNG must be refused, but prism exited 0")

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string>
 
+#include "kernels/shared/ray_gpu.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "support/shared_context.h"
@@ -75,4 +76,48 @@ TEST_CASE("scenes at the edges of the format render to finite pixels", "[render]
     for (std::int32_t id : r.primid) hits += id >= 0;
     CHECK(hits > 0);  // the camera sees something in every case
   }
+}
+
+// --check-nan's detector, against the image it watched: a light of NaN
+// intensity (which the loader refuses, so it is set after loading) poisons
+// every lit primary hit. The finding must be the first sample, in the image's
+// own order, whose pixel is not finite, its ray the camera's ray through that
+// sample (from the camera's position, unit length, meeting the unit sphere at
+// the reported t) and its primitive the one the primid AOV shows there.
+TEST_CASE("check_nan names the first sample whose light is not finite, and the ray that brought it",
+          "[render][reliability]") {
+  Scene s = parseScene(scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "matte"})",
+                             R"("matte": {"diffuse": 0.8})", "", "",
+                             R"({"max_depth": 0, "min_weight": 0, "aa": "none"})"),
+                       "nan.json");
+  RenderOptions options = RenderOptions::fromScene(s);
+  options.check_nan = true;
+  const RenderResult clean = test::sharedRenderer().render(s, options);
+  CHECK_FALSE(clean.stats.nan.has_value());
+
+  s.lights[0].intensity = std::nan("");
+  const RenderResult r = test::sharedRenderer().render(s, options);
+  std::size_t first = r.rgba.size();
+  for (std::size_t p = 0; 4 * p < r.rgba.size() && first == r.rgba.size(); ++p)
+    for (int c = 0; c < 4; ++c)
+      if (!std::isfinite(r.rgba[4 * p + c])) first = p;
+  REQUIRE(first < r.rgba.size());
+  REQUIRE(r.stats.nan.has_value());
+  const NanFinding& f = *r.stats.nan;
+  CHECK(f.sample == first);
+  CHECK(f.ray_kind == RAY_KIND_PRIMARY);
+  CHECK(f.depth == 0);
+  CHECK(static_cast<std::size_t>(f.film_x) == first % r.width);
+  CHECK(static_cast<std::size_t>(f.film_y) == first / r.width);
+  CHECK(f.prim == r.primid[first]);
+  CHECK(f.prim == 0);
+  CHECK(f.origin[0] == 0.0f);
+  CHECK(f.origin[1] == 1.0f);
+  CHECK(f.origin[2] == 6.0f);
+  const double dx = f.direction[0], dy = f.direction[1], dz = f.direction[2];
+  CHECK(std::abs(std::sqrt(dx * dx + dy * dy + dz * dz) - 1.0) < 1e-6);
+  const double hx = 0 + f.t * dx, hy = 1 + f.t * dy, hz = 6 + f.t * dz;
+  CHECK(std::abs(std::sqrt(hx * hx + hy * hy + hz * hz) - 1.0) < 1e-5);
+  const bool value_finite = std::isfinite(f.value[0]) && std::isfinite(f.value[1]) && std::isfinite(f.value[2]);
+  CHECK_FALSE(value_finite);
 }
