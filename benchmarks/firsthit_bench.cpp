@@ -23,6 +23,7 @@
 #include "render/firsthit.h"
 #include "render/gpu_scene.h"
 #include "render/ray_queries.h"
+#include "render/sampler.h"
 #include "scene/mesh_objects.h"
 
 namespace prism::bench {
@@ -197,7 +198,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
                "identical bit for bit\n\n";
   printHeader();
 
-  cl_kernel generate = context.kernel("generate.cl", "generate");
+  cl_kernel generate = context.kernel(kRenderLoopProgram, "generate");
   std::vector<FirstHitRow> rows;
   for (const std::string& path : inputs) {
     SharedMesh mesh = loadMeshFile(path, benchPlugins());
@@ -265,6 +266,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
         .arg(static_cast<cl_long>(0))  // strata group base
         .arg(static_cast<cl_int>(1))   // strata
         .arg(static_cast<cl_int>(count))
+        .arg(static_cast<cl_int>(0))  // a pinhole
         .arg(rays)
         .run(count);
     std::vector<RayGpu> primary = rays.readVector<RayGpu>(count);

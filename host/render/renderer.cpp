@@ -37,14 +37,12 @@ std::string gib(double bytes) {
 // (shade also takes the acceleration structure's options, which name moving
 // objects when there are some: it traces the point lights' feelers.)
 struct KernelFeatures {
-  std::string camera;   // generate: a lens or a shutter interval
   std::string shading;  // shade: area lights, lobes
   std::string shadows;  // spawn_shadows: area lights
 };
 
-KernelFeatures kernelFeatures(const Scene& scene, const GpuScene& gpu) {
+KernelFeatures kernelFeatures(const GpuScene& gpu) {
   KernelFeatures f;
-  if (!scene.camera.isPinhole()) f.camera = "-DPRISM_DISTRIBUTED_CAMERA";
   bool area = false, lobes = false;
   for (const LightGpu& l : gpu.lights) area = area || l.type != LIGHT_POINT;
   for (const MaterialGpu& m : gpu.materials) lobes = lobes || m.gloss > 0 || m.translucency > 0;
@@ -63,6 +61,7 @@ Renderer::Renderer(Context& context) : m_context(context) {
   m_accumulate = context.kernel(kRenderLoopProgram, "accumulate");
   m_supersample = context.kernel(kRenderLoopProgram, "supersample");
   m_resolve = context.kernel(kRenderLoopProgram, "resolve");
+  m_generate = context.kernel(kRenderLoopProgram, "generate");
 }
 
 Renderer::~Renderer() = default;
@@ -89,8 +88,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   }
   // Each distributed effect's code is compiled only into the programs of scenes
   // that use it, so a Whitted scene builds what it did before (PoCL compiles slowly).
-  const KernelFeatures features = kernelFeatures(scene, gpu);
-  m_generate = m_context.kernel("generate.cl", "generate", features.camera);
+  const KernelFeatures features = kernelFeatures(gpu);
   RenderResult result;
   result.width = options.width;
   result.height = options.height;
@@ -101,6 +99,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_options = &options;
   m_stats = &result.stats;
   m_zbuffer = first_hit == FirstHitMode::ZBuffer;
+  m_distributed_camera = !pinhole;
   m_spp = sampling.spp;
   m_strata = sampling.mode == AaMode::Random ? 0 : sampling.spp;
   m_group_base = 0;
@@ -367,6 +366,7 @@ void Renderer::traceChunk(int first_key, size_t n) {
       .arg(static_cast<cl_long>(m_group_base))
       .arg(static_cast<cl_int>(m_strata))
       .arg(static_cast<cl_int>(n))
+      .arg(static_cast<cl_int>(m_distributed_camera ? 1 : 0))
       .arg(m_work)
       .run(n);
   m_stats->rays_by_kind[RAY_KIND_PRIMARY] += n;

@@ -164,6 +164,7 @@ class Renderer {
   const RenderOptions* m_options = nullptr;
   RenderStats* m_stats = nullptr;
   bool m_zbuffer = false;  // wave 0 from the first-hit pass
+  bool m_distributed_camera = false;  // a lens or a shutter interval: generate samples them
   int m_spp = 1;           // samples per pixel of the per-pixel modes (1 otherwise)
   int m_strata = 1;        // samples that share strata in the sampler (0: independent, aa random)
   long long m_group_base = 0;  // adaptive: the batch's first position, so strata groups stay distinct
