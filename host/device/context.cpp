@@ -145,8 +145,15 @@ void KernelLaunch::run(size_t count) {
 
 // ---- Context -------------------------------------------------------------------
 
-Context::Context(const DeviceDescription& device, bool use_disk_cache)
-    : m_device(device), m_use_disk_cache(use_disk_cache) {
+bool driverCachesBuilds(const DeviceDescription& device) {
+  if (device.platform_name.find("Portable Computing Language") == std::string::npos) return false;
+  const char* cache = std::getenv("POCL_KERNEL_CACHE");
+  return !(cache && std::string(cache) == "0");
+}
+
+Context::Context(const DeviceDescription& device, bool use_disk_cache, BinaryCache binaries)
+    : m_device(device),
+      m_use_disk_cache(use_disk_cache && (binaries == BinaryCache::Always || !driverCachesBuilds(device))) {
   cl_int status = CL_SUCCESS;
   cl_context_properties props[] = {CL_CONTEXT_PLATFORM, reinterpret_cast<cl_context_properties>(device.platform), 0};
   m_context = clCreateContext(props, 1, &device.device, nullptr, nullptr, &status);

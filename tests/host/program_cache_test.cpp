@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include <unistd.h>
 
@@ -48,7 +49,7 @@ TEST_CASE("compiled programs are cached on disk and a corrupt entry is a miss", 
   DeviceDescription device = selectDevice("cpu");
 
   {
-    Context ctx(device, true);
+    Context ctx(device, true, BinaryCache::Always);
     CHECK(runTwice(ctx) == 42.0f);
   }
   auto files = cacheFiles(kernels);
@@ -56,7 +57,7 @@ TEST_CASE("compiled programs are cached on disk and a corrupt entry is a miss", 
   auto first_write = fs::last_write_time(files[0]);
 
   {
-    Context ctx(device, true);  // loads the binary: the entry is not rewritten
+    Context ctx(device, true, BinaryCache::Always);  // loads the binary: the entry is not rewritten
     CHECK(runTwice(ctx) == 42.0f);
   }
   CHECK(fs::last_write_time(files[0]) == first_write);
@@ -68,14 +69,14 @@ TEST_CASE("compiled programs are cached on disk and a corrupt entry is a miss", 
     f.put('\xa5');
   }
   {
-    Context ctx(device, true);  // a miss: compiles again and rewrites the entry
+    Context ctx(device, true, BinaryCache::Always);  // a miss: compiles again and rewrites the entry
     CHECK(runTwice(ctx) == 42.0f);
   }
   ProgramCache cache(kernels.string());
   CHECK(cache.load(files[0].stem().string()).has_value());
 
   {
-    Context ctx(device, false);  // --no-cache: nothing new is written
+    Context ctx(device, false, BinaryCache::Always);  // --no-cache: nothing new is written
     CHECK(runTwice(ctx) == 42.0f);
     ctx.kernelFromText(kSource, "twice.cl", "twice", "-DUNUSED=1");
   }
@@ -83,6 +84,28 @@ TEST_CASE("compiled programs are cached on disk and a corrupt entry is a miss", 
 
   CHECK(cache.keyFor(device, "", kSource) != cache.keyFor(device, "-DX", kSource));
   CHECK(cache.keyFor(device, "", kSource) != cache.keyFor(device, "", std::string(kSource) + " "));
+  ::unsetenv("PRISM_CACHE_DIR");
+  fs::remove_all(folder);
+}
+
+// PoCL caches its builds itself, and fetching a binary from it costs a compile
+// of every kernel, so by default prism's cache is left out on PoCL and used on
+// other drivers (Oclgrind, GPU drivers) or when PoCL's cache is off.
+TEST_CASE("a driver that caches its builds is left to its own cache", "[device][cache]") {
+  fs::path folder = fs::temp_directory_path() / ("prism-cache-policy-" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  ::setenv("PRISM_CACHE_DIR", folder.c_str(), 1);
+  DeviceDescription device = selectDevice("cpu");
+  const bool pocl = device.platform_name.find("Portable Computing Language") != std::string::npos;
+  CHECK(driverCachesBuilds(device) == pocl);
+  {
+    Context ctx(device, true);
+    CHECK(runTwice(ctx) == 42.0f);
+  }
+  CHECK(cacheFiles(folder).size() == (pocl ? 0u : 1u));
+  ::setenv("POCL_KERNEL_CACHE", "0", 1);
+  CHECK_FALSE(driverCachesBuilds(device));
+  ::unsetenv("POCL_KERNEL_CACHE");
   ::unsetenv("PRISM_CACHE_DIR");
   fs::remove_all(folder);
 }
