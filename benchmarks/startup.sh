@@ -17,18 +17,20 @@ run() {
   line=$("$prism" render "$root/scenes/whitted.json" -o "$out" --width "$width" --height "$height" \
            ${device:+--device "$device"})
   end=$(date +%s.%N)
-  # The summary line: "... in R s (kernels K s): ... M Mrays/s -> ..."
-  local render kernels mrays
+  # The summary line: "... in R s (kernels K s, first launches F s): ... M Mrays/s -> ..."
+  local render kernels launches mrays
   render=$(sed -E 's/.* in ([0-9.]+) s \(kernels.*/\1/' <<<"$line")
-  kernels=$(sed -E 's/.*\(kernels ([0-9.]+) s\).*/\1/' <<<"$line")
+  kernels=$(sed -E 's/.*\(kernels ([0-9.]+) s,.*/\1/' <<<"$line")
+  launches=$(sed -E 's/.*first launches ([0-9.]+) s\).*/\1/' <<<"$line")
   mrays=$(sed -E 's/.* ([0-9.]+) Mrays\/s.*/\1/' <<<"$line")
-  printf '| %s | %.2f | %s | %s | %s |\n' "$1" "$(awk -v a="$start" -v b="$end" 'BEGIN { print b - a }')" "$kernels" "$render" "$mrays"
+  printf '| %s | %.2f | %s | %s | %s | %s |\n' "$1" "$(awk -v a="$start" -v b="$end" 'BEGIN { print b - a }')" \
+    "$kernels" "$launches" "$render" "$mrays"
 }
 
 echo "default scene (scenes/whitted.json) at ${width}x${height}, device: $("$prism" devices | head -1)"
 echo
-echo "| start | process wall time (s) | kernel build/load (s) | render (s) | Mrays/s |"
-echo "| --- | --- | --- | --- | --- |"
+echo "| start | process wall time (s) | kernel build/load (s) | first launches (s) | render (s) | Mrays/s |"
+echo "| --- | --- | --- | --- | --- | --- |"
 run cold
 run warm
 run warm

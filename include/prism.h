@@ -466,6 +466,8 @@ typedef struct PrismRenderStats {
   double setup_seconds;        /* of `seconds`, before the first sample: scene, structure, kernels, uploads */
   double trace_seconds;        /* the rest: tracing, accumulation, resolve, read-back */
   uint32_t shadows_used;       /* PRISM_SHADOWS_ACCEL or PRISM_SHADOWS_LIGHTBUFFER */
+  double first_launch_seconds; /* of trace_seconds: kernels waiting on their first launch, where a driver
+                                  compiles them for it (start-up cost; throughput is over the rest) */
 } PrismRenderStats;
 
 /* After a render with options->profile set: how many kernels ran, and kernel

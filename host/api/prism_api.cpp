@@ -143,6 +143,7 @@ void fillStats(const RenderStats& from, double kernel_build_seconds, PrismRender
   stats->first_hit_used = toC(from.first_hit);
   stats->setup_seconds = from.setup_seconds;
   stats->trace_seconds = from.seconds - from.setup_seconds;
+  stats->first_launch_seconds = from.first_launch_seconds;
   prismParseShadows(shadowModeName(from.shadows), reinterpret_cast<PrismShadows*>(&stats->shadows_used));
 }
 

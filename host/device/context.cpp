@@ -137,10 +137,16 @@ void KernelLaunch::run(size_t count) {
   local = std::max<size_t>(local, 1);
   size_t global = (count + local - 1) / local * local;
   KernelProfile& profile = m_context.profile();
+  const bool first = m_context.firstLaunch(m_kernel);
   cl_event event = nullptr;
   PRISM_CL_CHECK(clEnqueueNDRangeKernel(m_context.queue(), m_kernel, 1, nullptr, &global, &local, 0, nullptr,
-                                        profile.enabled() ? &event : nullptr));
-  if (event) profile.record(m_kernel, event);
+                                        profile.enabled() || first ? &event : nullptr));
+  if (!event) return;
+  if (first) {
+    if (profile.enabled()) clRetainEvent(event);  // held by both
+    m_context.keepFirstLaunch(event);
+  }
+  if (profile.enabled()) profile.record(m_kernel, event);
 }
 
 // ---- Context -------------------------------------------------------------------
@@ -168,6 +174,7 @@ Context::Context(const DeviceDescription& device, bool use_disk_cache, BinaryCac
 
 Context::~Context() {
   m_profile.discard();  // its events hold the queue
+  for (cl_event e : m_first_launches) clReleaseEvent(e);
   for (auto& [key, p] : m_programs) {
     for (auto& [name, k] : p.kernels) clReleaseKernel(k);
     clReleaseProgram(p.program);
@@ -177,6 +184,32 @@ Context::~Context() {
 }
 
 void Context::finish() { PRISM_CL_CHECK(clFinish(m_queue)); }
+
+bool Context::firstLaunch(cl_kernel kernel) {
+  std::lock_guard<std::mutex> lock(m_launch_mutex);
+  return m_launched.insert(kernel).second;
+}
+
+void Context::keepFirstLaunch(cl_event event) {
+  std::lock_guard<std::mutex> lock(m_launch_mutex);
+  m_first_launches.push_back(event);
+}
+
+double Context::takeFirstLaunchSeconds() {
+  std::lock_guard<std::mutex> lock(m_launch_mutex);
+  double seconds = 0;
+  for (cl_event e : m_first_launches) {
+    cl_ulong submit = 0, start = 0;
+    if (clWaitForEvents(1, &e) == CL_SUCCESS &&
+        clGetEventProfilingInfo(e, CL_PROFILING_COMMAND_SUBMIT, sizeof submit, &submit, nullptr) == CL_SUCCESS &&
+        clGetEventProfilingInfo(e, CL_PROFILING_COMMAND_START, sizeof start, &start, nullptr) == CL_SUCCESS &&
+        start > submit)
+      seconds += static_cast<double>(start - submit) * 1e-9;
+    clReleaseEvent(e);
+  }
+  m_first_launches.clear();
+  return seconds;
+}
 
 double Context::takeBuildSeconds() {
   std::lock_guard<std::mutex> lock(m_mutex);

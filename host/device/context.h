@@ -7,6 +7,7 @@
 #include <CL/cl.h>
 
 #include <map>
+#include <set>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -118,10 +119,19 @@ class Context {
   cl_kernel kernelFromText(const std::string& text, const std::string& program_name, const std::string& kernel_name,
                            const std::string& options = "");
   KernelLaunch launch(cl_kernel kernel) { return KernelLaunch(*this, kernel); }
+  // KernelLaunch::run: whether this is the kernel's first launch (then it
+  // keeps the launch's event for takeFirstLaunchSeconds).
+  bool firstLaunch(cl_kernel kernel);
+  void keepFirstLaunch(cl_event event);
   void finish();
 
   // Seconds spent building or loading programs since the last call.
   double takeBuildSeconds();
+  // Seconds the kernels launched for the first time since the last call waited
+  // between submission and start: a driver compiles a kernel for its launch
+  // there (PoCL specialises it for the work-group size, about 0.1-0.6 s each),
+  // so it is start-up cost, not tracing. Waits for those launches to finish.
+  double takeFirstLaunchSeconds();
 
   // Device times of the launches made while it is started.
   KernelProfile& profile() { return m_profile; }
@@ -142,6 +152,9 @@ class Context {
   std::map<std::string, Program> m_programs;  // key: name + options
   std::mutex m_mutex;
   double m_build_seconds = 0;
+  std::set<cl_kernel> m_launched;         // kernels launched at least once
+  std::vector<cl_event> m_first_launches; // their first launches' events, until taken
+  std::mutex m_launch_mutex;              // guards the two above
   KernelProfile m_profile;
 };
 

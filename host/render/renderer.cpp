@@ -68,6 +68,7 @@ Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, const ProgressFn& progress) {
   options.validate();
+  m_context.takeFirstLaunchSeconds();  // launches before this render are not its start-up
   auto start = std::chrono::steady_clock::now();
   const SamplingOptions sampling = options.sampling();
   // The first-hit pass serves rays that leave one point at one instant.
@@ -213,6 +214,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   m_sample_xy = Buffer();
   m_zbuffer_xy = Buffer();
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.stats.first_launch_seconds = m_context.takeFirstLaunchSeconds();
   if (options.profile) result.stats.kernels = m_context.profile().stop();
   return result;
 }

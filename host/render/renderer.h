@@ -58,6 +58,10 @@ struct RenderStats {
   // Set-up before the first sample: flattening the scene, building the structure,
   // building (or loading) kernels, uploads. The rest of `seconds` is tracing.
   double setup_seconds = 0;
+  // Of the tracing time: kernels waiting between submission and start on their
+  // first launch, which is where a driver compiles them for it (PoCL specialises
+  // each for the work-group size): start-up cost, not tracing.
+  double first_launch_seconds = 0;
   std::vector<KernelTime> kernels;   // with RenderOptions::profile: device time per kernel, longest first
   std::optional<NanFinding> nan;     // with RenderOptions::check_nan, where one was found
 

@@ -62,7 +62,7 @@ class RenderStats(Structure):
                 ("shadow_rays", c_uint64), ("waves", c_uint32), ("rays_per_depth", c_uint64 * 32),
                 ("accel", c_uint32), ("accel_build_seconds", c_double), ("rays_per_pixel", c_double),
                 ("first_hit_used", c_uint32), ("setup_seconds", c_double), ("trace_seconds", c_double),
-                ("shadows_used", c_uint32)]
+                ("shadows_used", c_uint32), ("first_launch_seconds", c_double)]
 
 
 class Material(Structure):

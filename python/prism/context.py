@@ -193,6 +193,7 @@ class Context:
 
 def _stats_dict(s):
     return {"seconds": s.seconds, "setup_seconds": s.setup_seconds, "trace_seconds": s.trace_seconds,
+            "first_launch_seconds": s.first_launch_seconds,
             "kernel_build_seconds": s.kernel_build_seconds, "primary_rays": s.primary_rays,
             "reflected_rays": s.reflected_rays, "refracted_rays": s.refracted_rays, "shadow_rays": s.shadow_rays,
             "rays_per_depth": [s.rays_per_depth[i] for i in range(min(s.waves, 32))],

@@ -375,3 +375,20 @@ TEST_CASE("the same scene and seed give the same image bit for bit", "[render][d
   RenderResult c = renderScene(scene, opt);
   CHECK(std::memcmp(a.rgba.data(), c.rgba.data(), a.rgba.size() * sizeof(float)) != 0);
 }
+
+// The first launches' wait (a driver compiling a kernel for its launch) is
+// counted once per kernel: a render whose kernels have all run before reports
+// none, and what a render reports lies within its tracing time.
+TEST_CASE("first launches are counted once per kernel, inside the tracing time", "[render][stats]") {
+  const Scene scene = parseScene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+    "film": {"width": 16, "height": 12}, "lights": [{"position": [3, 3, 3]}],
+    "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}],
+    "materials": {"m": {"diffuse": 0.5, "reflect": 0.3}}})",
+                                 "stats.json");
+  const RenderOptions options = RenderOptions::fromScene(scene);
+  const RenderStats first = sharedRenderer().render(scene, options).stats;
+  CHECK(first.first_launch_seconds >= 0.0);
+  CHECK(first.first_launch_seconds <= first.seconds - first.setup_seconds);
+  const RenderStats again = sharedRenderer().render(scene, options).stats;
+  CHECK(again.first_launch_seconds == 0.0);
+}
