@@ -4,14 +4,14 @@
 # seeded with the corpus in tests/data (the scene loader: with scenes/). Fails if
 # any target finds a crash, a sanitizer error, a leak, a timeout (a hang) or an
 # out-of-memory.
-# Usage: scripts/run-fuzzers.sh [obj|ply|off|scene ...]   (default: all four)
+# Usage: scripts/run-fuzzers.sh [obj|ply|off|scene|api ...]   (default: all five)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PRISM_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${PRISM_FUZZ_SECONDS:-60}"
 data="$root/tests/data"
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(obj ply off scene)
+[ ${#targets[@]} -gt 0 ] || targets=(obj ply off scene api)
 
 if ! command -v clang++ >/dev/null; then
   echo "run-fuzzers: clang++ not found (Debian: clang libclang-rt-14-dev)" >&2
@@ -29,7 +29,8 @@ for t in "${targets[@]}"; do
   # plus the test meshes (inputs over -max_len are cut).
   seed_dir="$build/seeds/$t"
   rm -rf "$seed_dir" && mkdir -p "$seed_dir"
-  if [ "$t" = scene ]; then
+  if [ "$t" = scene ] || [ "$t" = api ]; then
+    # The API target reads JSON text for its scene calls (and the rest as calls).
     cp "$root"/scenes/*.json "$seed_dir/"
   else
     seeds=()
@@ -37,10 +38,12 @@ for t in "${targets[@]}"; do
     find "${seeds[@]}" "$data/meshes" -type f -iname "*.$t" -size -2M -exec cp -t "$seed_dir" {} + 2>/dev/null || true
     [ "$t" = off ] && cp "$data/formats/off/assimp/formatDetection" "$seed_dir/" 2>/dev/null || true
   fi
+  dict="$root/fuzz/$t.dict"
+  [ "$t" = api ] && dict="$root/fuzz/scene.dict"  # JSON's tokens, for the scene text among the calls
   echo "fuzzing $t for ${seconds}s (seeds: $(ls "$seed_dir" | wc -l) files)"
   if ! "$build/${t}_fuzzer" "$corpus" "$seed_dir" \
       -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
-      -dict="$root/fuzz/$t.dict" -artifact_prefix="$artifacts" -print_final_stats=1 \
+      -dict="$dict" -artifact_prefix="$artifacts" -print_final_stats=1 \
       >"$build/$t.log" 2>&1; then
     echo "  FAILED: see $build/$t.log and $artifacts" >&2
     tail -30 "$build/$t.log" >&2
