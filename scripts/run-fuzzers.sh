@@ -4,11 +4,15 @@
 # seeded with the corpus in tests/data (the scene loader: with scenes/). Fails if
 # any target finds a crash, a sanitizer error, a leak, a timeout (a hang) or an
 # out-of-memory.
+# $PRISM_FUZZ_RUNS, if set, also stops each target after that many executions
+# (the long budget of docs/reliability.md: PRISM_FUZZ_RUNS=10000000 with a
+# PRISM_FUZZ_SECONDS large enough not to stop it first).
 # Usage: scripts/run-fuzzers.sh [obj|ply|off|scene|api ...]   (default: all five)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PRISM_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${PRISM_FUZZ_SECONDS:-60}"
+runs="${PRISM_FUZZ_RUNS:+-runs=$PRISM_FUZZ_RUNS}"
 data="$root/tests/data"
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(obj ply off scene api)
@@ -42,7 +46,7 @@ for t in "${targets[@]}"; do
   [ "$t" = api ] && dict="$root/fuzz/scene.dict"  # JSON's tokens, for the scene text among the calls
   echo "fuzzing $t for ${seconds}s (seeds: $(ls "$seed_dir" | wc -l) files)"
   if ! "$build/${t}_fuzzer" "$corpus" "$seed_dir" \
-      -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
+      -max_total_time="$seconds" $runs -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
       -dict="$dict" -artifact_prefix="$artifacts" -print_final_stats=1 \
       >"$build/$t.log" 2>&1; then
     echo "  FAILED: see $build/$t.log and $artifacts" >&2
