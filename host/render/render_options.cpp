@@ -7,41 +7,17 @@
 namespace prism {
 
 FirstHitMode parseFirstHitMode(const std::string& name) {
-  if (name == "auto") return FirstHitMode::Auto;
-  if (name == "zbuffer") return FirstHitMode::ZBuffer;
-  if (name == "trace") return FirstHitMode::Trace;
-  throw std::invalid_argument("unknown first-hit mode '" + name + "' (valid: auto, zbuffer, trace)");
-}
-
-const char* firstHitName(FirstHitMode mode) {
-  switch (mode) {
-    case FirstHitMode::ZBuffer:
-      return "zbuffer";
-    case FirstHitMode::Trace:
-      return "trace";
-    case FirstHitMode::Auto:
-      break;
-  }
-  return "auto";
+  FirstHitMode mode;
+  if (!tryParseFirstHitMode(name, &mode))
+    throw std::invalid_argument("unknown first-hit mode '" + name + "' (valid: " + kFirstHitModeNames + ")");
+  return mode;
 }
 
 ShadowMode parseShadowMode(const std::string& name) {
-  if (name == "auto") return ShadowMode::Auto;
-  if (name == "accel") return ShadowMode::Accel;
-  if (name == "lightbuffer") return ShadowMode::LightBuffer;
-  throw std::invalid_argument("unknown shadow mode '" + name + "' (valid: " + kShadowModeNames + ")");
-}
-
-const char* shadowModeName(ShadowMode mode) {
-  switch (mode) {
-    case ShadowMode::Accel:
-      return "accel";
-    case ShadowMode::LightBuffer:
-      return "lightbuffer";
-    case ShadowMode::Auto:
-      break;
-  }
-  return "auto";
+  ShadowMode mode;
+  if (!tryParseShadowMode(name, &mode))
+    throw std::invalid_argument("unknown shadow mode '" + name + "' (valid: " + kShadowModeNames + ")");
+  return mode;
 }
 
 RenderOptions RenderOptions::fromScene(const Scene& scene) {

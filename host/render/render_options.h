@@ -10,27 +10,22 @@
 #include "render/sampler.h"
 #include "scene/primitives/bounds_kind.h"
 #include "scene/primitives/inside_test.h"
+#include "scene/render_modes.h"
 #include "scene/scene.h"
 
 namespace prism {
 
-// How the renderer finds what primary rays hit: the first-hit (Z-buffer) pass
+// FirstHitMode (scene/render_modes.h): the first-hit (Z-buffer) pass
 // (render/firsthit.h), traced rays (extend), or the Z-buffer whenever the camera
-// allows it (a pinhole: no depth of field, no motion blur).
-enum class FirstHitMode { Auto, ZBuffer, Trace };
-
-// "auto", "zbuffer", "trace"; an unknown name throws std::invalid_argument listing them.
-FirstHitMode parseFirstHitMode(const std::string& name);
-const char* firstHitName(FirstHitMode mode);
-
-// How point lights' shadow feelers find what is in the way: the acceleration
-// structure, the light buffer (render/light_buffer.h), or whichever the
-// renderer's cost model expects to be faster (auto).
-enum class ShadowMode { Auto, Accel, LightBuffer };
-constexpr const char* kShadowModeNames = "auto, accel, lightbuffer";
+// allows it (a pinhole: no depth of field, no motion blur) and zbufferPays.
 // An unknown name throws std::invalid_argument listing them.
+FirstHitMode parseFirstHitMode(const std::string& name);
+
+// ShadowMode (scene/render_modes.h): the acceleration structure, the light
+// buffer (render/light_buffer.h), or whichever the renderer's cost model
+// expects to be faster (auto). An unknown name throws std::invalid_argument
+// listing them.
 ShadowMode parseShadowMode(const std::string& name);
-const char* shadowModeName(ShadowMode mode);
 
 struct RenderOptions {
   int width = 640;

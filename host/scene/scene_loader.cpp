@@ -19,6 +19,7 @@
 #include "scene/json_reader.h"
 #include "scene/light_check.h"
 #include "scene/primitives/bounds_kind.h"
+#include "scene/render_modes.h"
 #include "scene/primitives/inside_test.h"
 #include "scene/primitives/primitive_kind.h"
 #include "scene/mesh_objects.h"
@@ -203,9 +204,10 @@ class SceneParser : private JsonReader {
       r.accel = name;
     }
     if (const Json* p = find(v, "first_hit")) {
-      const std::string name = string(*p, member(path, "first_hit"), "a string (auto, zbuffer, trace)");
-      if (name != "auto" && name != "zbuffer" && name != "trace")
-        fail(member(path, "first_hit"), "unknown first-hit mode '" + name + "' (expected auto, zbuffer, trace)");
+      const std::string name = string(*p, member(path, "first_hit"), std::string("a string (") + kFirstHitModeNames + ")");
+      FirstHitMode mode;
+      if (!tryParseFirstHitMode(name, &mode))
+        fail(member(path, "first_hit"), "unknown first-hit mode '" + name + "' (expected " + kFirstHitModeNames + ")");
       r.first_hit = name;
     }
     if (const Json* p = find(v, "inside_test")) {
@@ -216,9 +218,10 @@ class SceneParser : private JsonReader {
       r.inside_test = name;
     }
     if (const Json* p = find(v, "shadows")) {
-      const std::string name = string(*p, member(path, "shadows"), "a string (auto, accel, lightbuffer)");
-      if (name != "auto" && name != "accel" && name != "lightbuffer")
-        fail(member(path, "shadows"), "unknown shadow mode '" + name + "' (expected auto, accel, lightbuffer)");
+      const std::string name = string(*p, member(path, "shadows"), std::string("a string (") + kShadowModeNames + ")");
+      ShadowMode mode;
+      if (!tryParseShadowMode(name, &mode))
+        fail(member(path, "shadows"), "unknown shadow mode '" + name + "' (expected " + kShadowModeNames + ")");
       r.shadows = name;
     }
     if (const Json* p = find(v, "bounds")) {
