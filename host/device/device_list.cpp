@@ -82,6 +82,7 @@ std::vector<DeviceDescription> listDevices() {
       desc.type = deviceValue<cl_device_type>(d, CL_DEVICE_TYPE);
       desc.compute_units = deviceValue<cl_uint>(d, CL_DEVICE_MAX_COMPUTE_UNITS);
       desc.global_memory_bytes = deviceValue<cl_ulong>(d, CL_DEVICE_GLOBAL_MEM_SIZE);
+      desc.max_alloc_bytes = deviceValue<cl_ulong>(d, CL_DEVICE_MAX_MEM_ALLOC_SIZE);
       desc.max_work_group_size = deviceValue<size_t>(d, CL_DEVICE_MAX_WORK_GROUP_SIZE);
       desc.extensions = deviceString(d, CL_DEVICE_EXTENSIONS);
       result.push_back(desc);

@@ -18,6 +18,7 @@ struct DeviceDescription {
   cl_device_type type = 0;
   unsigned compute_units = 0;
   std::uint64_t global_memory_bytes = 0;
+  std::uint64_t max_alloc_bytes = 0;  // CL_DEVICE_MAX_MEM_ALLOC_SIZE: the largest single buffer
   std::size_t max_work_group_size = 1;
   std::string extensions;  // CL_DEVICE_EXTENSIONS, space-separated
 

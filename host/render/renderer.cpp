@@ -540,8 +540,7 @@ void Renderer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
   const RenderOptions& opt = *m_options;
   const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * opt.height;
   const DeviceDescription& device = m_context.device();
-  cl_ulong max_alloc = 0;
-  PRISM_CL_CHECK(clGetDeviceInfo(device.device, CL_DEVICE_MAX_MEM_ALLOC_SIZE, sizeof max_alloc, &max_alloc, nullptr));
+  const std::uint64_t max_alloc = device.max_alloc_bytes;
   const std::uint64_t global = device.global_memory_bytes;
   // Everything else this render keeps on the device: queues, scene, structure, AOVs.
   std::uint64_t other = pixels * kBytesPerPixel + deviceGeometryBytes(*m_scene) +
