@@ -124,11 +124,12 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
     return;
   }
 
-  const int material = prim_material(geom, hit.prim);
+  __global const MeshGpu* mesh = prim_mesh_or_null(geom, hit.prim); /* one search for both questions */
+  const int material = prim_material_in(geom, hit.prim, mesh);
   __global const MaterialGpu* m = &materials[material];
   float3 n;
   float2 uv = (float2)(0.0f, 0.0f);
-  prim_surface(geom, hit.prim, ray.time, hit, m->texture != TEXTURE_NONE, o, d, &n, &uv);
+  prim_surface(geom, hit.prim, mesh, ray.time, hit, m->texture != TEXTURE_NONE, o, d, &n, &uv);
   float3 p = o + hit.t * d;
   float3 i_dir = normalize(d);
   bool inside = dot(n, i_dir) > 0.0f;

@@ -63,12 +63,20 @@ inline bool prim_world_to_object(const Geometry* g, int id, float time, float* m
   return true;
 }
 
-inline int prim_material(const Geometry* g, int id) {
-  if (!prim_is_compact(g, id)) return g->objects[id].material;
-  __global const MeshGpu* mesh = prim_mesh(g, id);
+/* A compact triangle's mesh header, or NULL for a primitive with its own
+ * record: looked up once by a caller that asks several things of one hit. */
+inline __global const MeshGpu* prim_mesh_or_null(const Geometry* g, int id) {
+  return prim_is_compact(g, id) ? prim_mesh(g, id) : 0;
+}
+
+/* mesh: prim_mesh_or_null(g, id). */
+inline int prim_material_in(const Geometry* g, int id, __global const MeshGpu* mesh) {
+  if (!mesh) return g->objects[id].material;
   return mesh->material >= 0 ? mesh->material
                              : as_int(g->mesh_data[mesh->material_offset + id - mesh->first_triangle]);
 }
+
+inline int prim_material(const Geometry* g, int id) { return prim_material_in(g, id, prim_mesh_or_null(g, id)); }
 
 /* The ray (o, d) at `time` against primitive id; t is the ray's own parameter. */
 inline bool prim_intersect(const Geometry* g, int id, float3 o, float3 d, float time, float tmin, float tmax,
@@ -88,14 +96,14 @@ inline bool prim_intersect(const Geometry* g, int id, float3 o, float3 d, float 
 
 /* Geometric unit normal and, when want_uv, texture coordinates at the hit (as
  * object_surface); a smooth mesh's normal is its vertex normals interpolated,
- * kept on the side of the winding's normal. */
-inline void prim_surface(const Geometry* g, int id, float time, HitGpu hit, bool want_uv, float3 o, float3 d,
-                         float3* normal, float2* uv) {
-  if (!prim_is_compact(g, id)) {
+ * kept on the side of the winding's normal. mesh: prim_mesh_or_null(g, id),
+ * which a caller that also wants the material looks up once for both. */
+inline void prim_surface(const Geometry* g, int id, __global const MeshGpu* mesh, float time, HitGpu hit,
+                            bool want_uv, float3 o, float3 d, float3* normal, float2* uv) {
+  if (!mesh) {
     object_surface(g->objects + id, o, d, time, hit, want_uv, normal, uv);
     return;
   }
-  __global const MeshGpu* mesh = prim_mesh(g, id);
   uint3 idx = prim_triangle_indices(g, id);
   float3 v0, v1, v2;
   prim_triangle_vertices(g, idx, &v0, &v1, &v2);
