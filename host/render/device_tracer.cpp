@@ -1,0 +1,506 @@
+#include "render/device_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "kernels/shared/contribution_gpu.h"
+#include "kernels/shared/hit_gpu.h"
+#include "kernels/shared/ray_gpu.h"
+#include "kernels/shared/surface_gpu.h"
+
+namespace prism {
+namespace {
+
+constexpr int kCompactBlock = 256;  // slots counted by one work-item of count_rays
+
+int compactBlocks(size_t slots) { return static_cast<int>((slots + kCompactBlock - 1) / kCompactBlock); }
+
+// Device bytes a sample takes: its rgba film entry and its (x, y) position.
+constexpr std::uint64_t kFilmBytesPerSample = 4 * sizeof(float);
+constexpr std::uint64_t kPositionBytesPerSample = 2 * sizeof(float);
+// Per pixel: resolved rgba, depth, normal, primid, albedo.
+constexpr std::uint64_t kBytesPerPixel = (4 + 1 + 3 + 1 + 3) * 4;
+
+std::string gib(double bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+  return text;
+}
+
+// Build options naming the distributed features a scene uses (kernels/*.cl test
+// them with #ifdef).
+// (shade also takes the acceleration structure's options, which name moving
+// objects when there are some: it traces the point lights' feelers.)
+struct KernelFeatures {
+  std::string shading;  // shade: area lights, lobes
+  std::string shadows;  // spawn_shadows: area lights
+};
+
+KernelFeatures kernelFeatures(const GpuScene& gpu) {
+  KernelFeatures f;
+  bool area = false, lobes = false;
+  for (const LightGpu& l : gpu.lights) area = area || l.type != LIGHT_POINT;
+  for (const MaterialGpu& m : gpu.materials) lobes = lobes || m.gloss > 0 || m.translucency > 0;
+  if (area) f.shading += " -DPRISM_AREA_LIGHTS";
+  if (lobes) f.shading += " -DPRISM_LOBES";
+  if (area) f.shadows = "-DPRISM_AREA_LIGHTS";
+  return f;
+}
+
+}  // namespace
+
+DeviceTracer::DeviceTracer(Context& context) : m_context(context) {
+  m_count = context.kernel(kRenderLoopProgram, "count_rays");
+  m_scan = context.kernel(kRenderLoopProgram, "scan_blocks");
+  m_scatter = context.kernel(kRenderLoopProgram, "scatter_rays");
+  m_accumulate = context.kernel(kRenderLoopProgram, "accumulate");
+  m_supersample = context.kernel(kRenderLoopProgram, "supersample");
+  m_resolve = context.kernel(kRenderLoopProgram, "resolve");
+  m_generate = context.kernel(kRenderLoopProgram, "generate");
+}
+
+DeviceTracer::~DeviceTracer() = default;
+
+void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats) {
+  const GpuScene& gpu = *frame.scene;
+  const RenderOptions& options = *frame.options;
+  const DeviceAccel& accel = *frame.accel;
+  m_scene = &gpu;
+  m_options = &options;
+  m_sampling = frame.sampling;
+  m_stats = &stats;
+  m_zbuffer = frame.zbuffer;
+  m_distributed_camera = frame.distributed_camera;
+  m_spp = frame.sampling.spp;
+  m_strata = frame.sampling.mode == AaMode::Random ? 0 : frame.sampling.spp;
+  m_group_base = 0;
+  m_shadow_slots = 0;
+  m_point_lights = false;
+  for (const LightGpu& l : gpu.lights) {
+    m_shadow_slots += l.samples;  // 0 for point lights
+    m_point_lights = m_point_lights || l.type == LIGHT_POINT;
+  }
+  // Each distributed effect's code is compiled only into the programs of scenes
+  // that use it, so a Whitted scene builds what it did before (PoCL compiles slowly).
+  const KernelFeatures features = kernelFeatures(gpu);
+
+  const size_t pixels = static_cast<size_t>(options.width) * options.height;
+  m_camera = Buffer(m_context, sizeof(CameraGpu));
+  m_camera.write(&gpu.camera, sizeof(CameraGpu));
+  const std::int32_t none_bad = std::numeric_limits<std::int32_t>::max();
+  m_first_bad = Buffer(m_context, sizeof none_bad);
+  m_first_bad.write(&none_bad, sizeof none_bad);
+  m_geometry.upload(m_context, gpu);
+  m_accel.upload(m_context, accel);
+  m_accel_bytes = accel.stats.bytes;
+  m_extend = m_context.kernel("extend.cl", "extend", accel.kernel_options);
+  const LightBuffer& light_buffer = *frame.light_buffer;
+  // (bound, never read, without a light buffer: a buffer may not be empty)
+  const std::vector<std::int32_t> cells = light_buffer.cells.empty() ? std::vector<std::int32_t>(2, 0) : light_buffer.cells;
+  const std::vector<std::int32_t> ids = light_buffer.ids.empty() ? std::vector<std::int32_t>(1, 0) : light_buffer.ids;
+  const std::vector<float> windows = light_buffer.windows.empty() ? std::vector<float>(4, 0.0f) : light_buffer.windows;
+  m_light_buffer_cells = Buffer(m_context, cells.size() * sizeof(std::int32_t));
+  m_light_buffer_cells.writeVector(cells);
+  m_light_buffer_ids = Buffer(m_context, ids.size() * sizeof(std::int32_t));
+  m_light_buffer_ids.writeVector(ids);
+  m_light_buffer_windows = Buffer(m_context, windows.size() * sizeof(float));
+  m_light_buffer_windows.writeVector(windows);
+  m_light_buffer_resolution = light_buffer.resolution;
+  m_shade = m_context.kernel("shade.cl", "shade",
+                             accel.kernel_options + features.shading +
+                                 (frame.use_light_buffer ? " -DPRISM_LIGHT_BUFFER" : ""));
+  if (m_shadow_slots > 0) {
+    m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shadows);
+    m_occlude = m_context.kernel("occlude.cl", "occlude", accel.kernel_options);
+  }
+  if (m_zbuffer) {
+    if (!m_firsthit) m_firsthit = std::make_unique<FirstHitPass>(m_context);
+    m_firsthit->prepare(gpu);
+  }
+  m_materials = Buffer(m_context, gpu.materials.size() * sizeof(MaterialGpu));
+  m_materials.writeVector(gpu.materials);
+  m_texels = Buffer(m_context, gpu.texels.size() * sizeof(float));
+  m_texels.writeVector(gpu.texels);
+  m_lights = Buffer(m_context, gpu.lights.size() * sizeof(LightGpu));
+  m_lights.writeVector(gpu.lights);
+  m_aov_depth = Buffer(m_context, pixels * sizeof(float));
+  m_aov_normal = Buffer(m_context, pixels * 3 * sizeof(float));
+  m_aov_primid = Buffer(m_context, pixels * sizeof(std::int32_t));
+  m_aov_albedo = Buffer(m_context, pixels * 3 * sizeof(float));
+
+  m_levels.clear();
+  m_levels.emplace_back();  // depth 0 is generated chunk by chunk straight into m_work
+  for (int d = 1; d <= options.max_depth; ++d) m_levels.emplace_back(m_context, 2 * kSliceRays * sizeof(RayGpu));
+  m_work.reserve(m_context, kSliceRays * sizeof(RayGpu));
+  m_hits.reserve(m_context, kSliceRays * sizeof(HitGpu));
+  m_emit.reserve(m_context, kSliceRays * sizeof(ContributionGpu));
+  m_children.reserve(m_context, 2 * kSliceRays * sizeof(RayGpu));
+  m_child_tags.reserve(m_context, 2 * kSliceRays * sizeof(std::int32_t));
+  // Shaded points are kept only for area lights' feelers (a buffer cannot be empty).
+  m_surfaces.reserve(m_context, (m_shadow_slots > 0 ? kSliceRays : 1) * sizeof(SurfaceGpu));
+  if (m_shadow_slots > 0) {
+    const size_t slots = std::min(kShadowSlots, kSliceRays * m_shadow_slots);
+    m_shadows.reserve(m_context, slots * sizeof(RayGpu));
+    m_shadow_tags.reserve(m_context, slots * sizeof(std::int32_t));
+    m_shadow_queue.reserve(m_context, slots * sizeof(RayGpu));
+    m_shadow_light.reserve(m_context, slots * sizeof(ContributionGpu));
+  }
+  const size_t max_blocks = (std::max(2 * kSliceRays, kShadowSlots) + kCompactBlock - 1) / kCompactBlock;
+  m_counts.reserve(m_context, max_blocks * RAY_COUNT_COLUMNS * sizeof(std::int32_t));
+  m_offsets.reserve(m_context, max_blocks * sizeof(std::int32_t));
+  m_totals.reserve(m_context, RAY_TOTALS * sizeof(std::int32_t));
+  m_chunk_xy.reserve(m_context, kSliceRays * 2 * sizeof(float));
+  m_chunk_aov.reserve(m_context, kSliceRays * sizeof(std::int32_t));
+}
+
+void DeviceTracer::unload() {
+  // The per-sample film can be large: give it back now rather than at the next render.
+  m_film = Buffer();
+  m_sample_xy = Buffer();
+  m_zbuffer_xy = Buffer();
+  m_scene = nullptr;
+  m_options = nullptr;
+  m_stats = nullptr;
+}
+
+void DeviceTracer::beginSampleFilm(std::uint64_t total) {
+  const RenderOptions& opt = *m_options;
+  checkFilmFits(total, true);
+  std::vector<float> tile_xy(2, 0.0f);  // a buffer may not be empty
+  if (m_sampling.mode == AaMode::Poisson) tile_xy = poissonTile(m_sampling.spp, opt.seed).xy;
+  m_tile = Buffer(m_context, tile_xy.size() * sizeof(float));
+  m_tile.writeVector(tile_xy);
+  m_film = Buffer();  // free the last render's film before asking for this one
+  m_sample_xy = Buffer();
+  m_film = Buffer(m_context, total * kFilmBytesPerSample);
+  zeroFill(m_film, total * kFilmBytesPerSample);
+  m_sample_xy = Buffer(m_context, total * kPositionBytesPerSample);
+}
+
+void DeviceTracer::samplePositions(std::uint64_t first, size_t n) {
+  const RenderOptions& opt = *m_options;
+  m_context.launch(m_supersample)
+      .arg(static_cast<cl_int>(m_sampling.mode))
+      .arg(static_cast<cl_int>(opt.width))
+      .arg(static_cast<cl_int>(opt.height))
+      .arg(static_cast<cl_int>(m_sampling.spp))
+      .arg(static_cast<cl_uint>(kernelSeed(opt.seed)))
+      .arg(m_tile)
+      .arg(static_cast<cl_long>(first))
+      .arg(static_cast<cl_int>(n))
+      .arg(m_chunk_xy)
+      .arg(m_chunk_aov)
+      .run(n);
+  m_chunk_xy.copyTo(m_sample_xy, n * kPositionBytesPerSample, 0, first * kPositionBytesPerSample);
+}
+
+void DeviceTracer::traceSamples(std::uint64_t first_sample, std::uint64_t end,
+                                const std::function<void(std::uint64_t)>& done) {
+  // The Z-buffer takes its batch of samples at once: their positions first,
+  // rasterised together, then resolved chunk by chunk.
+  if (m_zbuffer) {
+    for (std::uint64_t first = first_sample; first < end; first += kSliceRays)
+      samplePositions(first, static_cast<size_t>(std::min<std::uint64_t>(kSliceRays, end - first)));
+    // Per-pixel modes number their samples pixel by pixel: no sort needed.
+    m_firsthit->rasterize(m_geometry, m_sample_xy, static_cast<size_t>(first_sample),
+                          static_cast<size_t>(end - first_sample),
+                          m_sampling.mode == AaMode::Quincunx ? 0 : m_sampling.spp);
+  }
+  // Chunks of kSliceRays samples in sequence order: keys ascend within each.
+  for (std::uint64_t first = first_sample; first < end; first += kSliceRays) {
+    const size_t n = static_cast<size_t>(std::min<std::uint64_t>(kSliceRays, end - first));
+    samplePositions(first, n);
+    m_zbuffer_first = static_cast<size_t>(first - first_sample);
+    traceChunk(static_cast<int>(first), n);
+    if (done) done(first + n);
+  }
+}
+
+std::vector<float> DeviceTracer::resolvePixels() {
+  const RenderOptions& opt = *m_options;
+  const size_t pixels = static_cast<size_t>(opt.width) * opt.height;
+  m_pixels.reserve(m_context, pixels * 4 * sizeof(float));
+  m_context.launch(m_resolve)
+      .arg(static_cast<cl_int>(m_sampling.mode))
+      .arg(static_cast<cl_int>(m_sampling.effectiveFilter()))
+      .arg(static_cast<cl_int>(opt.width))
+      .arg(static_cast<cl_int>(opt.height))
+      .arg(static_cast<cl_int>(m_sampling.spp))
+      .arg(m_sample_xy)
+      .arg(m_film)
+      .arg(static_cast<cl_int>(0))
+      .arg(static_cast<cl_int>(pixels))
+      .arg(m_pixels)
+      .run(pixels);
+  return m_pixels.readVector<float>(pixels * 4);
+}
+
+std::vector<float> DeviceTracer::traceFilmPositions(const std::vector<float>& xy,
+                                                    const std::vector<std::int32_t>& aov_pixel,
+                                                    std::uint64_t position_base,
+                                                    const std::function<void(size_t done)>& done) {
+  const size_t n = xy.size() / 2;
+  if (aov_pixel.size() != n) throw std::logic_error("traceFilmPositions: one AOV pixel per position");
+  if (n == 0) return {};
+  // The colours come back to the host, so the device film need only hold one batch
+  // (a whole number of slices; the key is the position's index in its batch).
+  const size_t batch = std::min(n, m_film_batch_slices * kSliceRays);
+  checkFilmFits(batch, false);
+  m_film = Buffer();
+  m_film = Buffer(m_context, batch * kFilmBytesPerSample);
+  std::vector<float> rgba(4 * n);
+  for (size_t begin = 0; begin < n; begin += batch) {
+    const size_t count = std::min(batch, n - begin);
+    zeroFill(m_film, count * kFilmBytesPerSample);
+    // A key is the position's index in its batch; its strata group follows on
+    // from every position traced before it in the frame.
+    m_group_base = static_cast<long long>(position_base + begin);
+    for (size_t first = 0; first < count; first += kSliceRays) {
+      const size_t m = std::min(kSliceRays, count - first);
+      if (m_zbuffer && first % kZBufferBatch == 0) {
+        // The next Z-buffer batch of positions, rasterised together.
+        const size_t z = std::min<size_t>(kZBufferBatch, count - first);
+        m_zbuffer_xy.reserve(m_context, z * kPositionBytesPerSample);
+        m_zbuffer_xy.write(xy.data() + 2 * (begin + first), z * kPositionBytesPerSample);
+        m_firsthit->rasterize(m_geometry, m_zbuffer_xy, 0, z);
+      }
+      m_zbuffer_first = first % kZBufferBatch;
+      m_chunk_xy.write(xy.data() + 2 * (begin + first), m * kPositionBytesPerSample);
+      m_chunk_aov.write(aov_pixel.data() + begin + first, m * sizeof(std::int32_t));
+      traceChunk(static_cast<int>(first), m);
+      if (done) done(begin + first + m);
+    }
+    m_film.read(rgba.data() + 4 * begin, count * kFilmBytesPerSample);
+    ++m_stats->film_batches;
+  }
+  return rgba;
+}
+
+void DeviceTracer::readAovs(std::vector<float>& depth, std::vector<float>& normal, std::vector<std::int32_t>& primid,
+                            std::vector<float>& albedo) const {
+  const size_t pixels = static_cast<size_t>(m_options->width) * m_options->height;
+  depth = m_aov_depth.readVector<float>(pixels);
+  normal = m_aov_normal.readVector<float>(pixels * 3);
+  primid = m_aov_primid.readVector<std::int32_t>(pixels);
+  albedo = m_aov_albedo.readVector<float>(pixels * 3);
+}
+
+void DeviceTracer::traceChunk(int first_key, size_t n) {
+  m_chunk_first = first_key;
+  m_context.launch(m_generate)
+      .arg(m_camera)
+      .arg(m_chunk_xy)
+      .arg(m_chunk_aov)
+      .arg(static_cast<cl_int>(first_key))
+      .arg(static_cast<cl_int>(m_spp))
+      .arg(static_cast<cl_long>(m_group_base))
+      .arg(static_cast<cl_int>(m_strata))
+      .arg(static_cast<cl_int>(n))
+      .arg(static_cast<cl_int>(m_distributed_camera ? 1 : 0))
+      .arg(m_work)
+      .run(n);
+  m_stats->rays_by_kind[RAY_KIND_PRIMARY] += n;
+  m_stats->waves = std::max(m_stats->waves, 1);
+  if (m_zbuffer) m_firsthit->resolve(m_geometry, m_zbuffer_first, n, m_hits);
+  traceSlice(0, n, m_zbuffer);
+}
+
+void DeviceTracer::traceLevel(int depth, size_t count) {
+  m_stats->waves = std::max(m_stats->waves, depth + 1);
+  for (size_t start = 0; start < count; start += kSliceRays) {
+    size_t n = std::min(kSliceRays, count - start);
+    m_levels[depth].copyTo(m_work, n * sizeof(RayGpu), start * sizeof(RayGpu), 0);
+    traceSlice(depth, n);
+  }
+}
+
+void DeviceTracer::traceSlice(int depth, size_t n, bool have_hits) {
+  const int light_count = static_cast<int>(m_scene->lights.size());
+  const RenderOptions& opt = *m_options;
+  m_stats->rays_per_depth[depth] += n;
+
+  if (!have_hits) {
+    KernelLaunch extend = m_context.launch(m_extend);
+    extend.arg(m_work).arg(static_cast<int>(n));
+    m_accel.bind(extend, m_geometry).arg(m_hits).run(n);
+  }
+
+  cl_float4 ambient, background;
+  for (int i = 0; i < 4; ++i) {
+    ambient.s[i] = m_scene->ambient[i];
+    background.s[i] = m_scene->background[i];
+  }
+  KernelLaunch shade = m_context.launch(m_shade);
+  shade.arg(m_work).arg(m_hits).arg(static_cast<int>(n));
+  m_accel.bind(shade, m_geometry)
+      .arg(m_materials)
+      .arg(m_texels)
+      .arg(m_lights)
+      .arg(light_count)
+      .arg(m_light_buffer_cells)
+      .arg(m_light_buffer_ids)
+      .arg(m_light_buffer_windows)
+      .arg(static_cast<cl_int>(m_light_buffer_resolution))
+      .arg(ambient)
+      .arg(background)
+      .arg(opt.max_depth)
+      .arg(static_cast<float>(opt.min_weight))
+      .arg(static_cast<cl_uint>(m_scene->camera.seed))
+      .arg(static_cast<cl_int>(m_strata))
+      .arg(m_emit)
+      .arg(m_children)
+      .arg(m_child_tags)
+      .arg(m_surfaces)
+      .arg(m_aov_depth)
+      .arg(m_aov_normal)
+      .arg(m_aov_primid)
+      .arg(m_aov_albedo)
+      .run(n);
+  accumulate(m_emit, n, m_work, &m_hits);
+
+  if (m_shadow_slots > 0) traceShadows(n);
+
+  // At the last depth the children's slots are all empty, but they still hold
+  // the count of point-light feelers.
+  if (depth >= opt.max_depth) {
+    if (m_point_lights) countRays(m_child_tags, 2 * n, m_stats->rays_by_kind);
+    return;
+  }
+  size_t child_count = compact(m_children, m_child_tags, 2 * n, m_levels[depth + 1], m_stats->rays_by_kind);
+  if (child_count > 0) traceLevel(depth + 1, child_count);
+}
+
+void DeviceTracer::traceShadows(size_t surfaces) {
+  const int light_count = static_cast<int>(m_scene->lights.size());
+  const size_t per_run = std::max<size_t>(1, kShadowSlots / m_shadow_slots);  // shaded points per run
+  for (size_t first = 0; first < surfaces; first += per_run) {
+    const size_t slots = std::min(per_run, surfaces - first) * m_shadow_slots;
+    m_context.launch(m_spawn_shadows)
+        .arg(m_surfaces)
+        .arg(static_cast<cl_long>(first * m_shadow_slots))
+        .arg(static_cast<cl_int>(slots))
+        .arg(static_cast<cl_int>(m_shadow_slots))
+        .arg(m_materials)
+        .arg(m_lights)
+        .arg(light_count)
+        .arg(static_cast<cl_uint>(m_scene->camera.seed))
+        .arg(static_cast<cl_int>(m_strata))
+        .arg(m_shadows)
+        .arg(m_shadow_tags)
+        .run(slots);
+    const size_t live = compact(m_shadows, m_shadow_tags, slots, m_shadow_queue, m_stats->rays_by_kind);
+    if (live == 0) continue;
+    KernelLaunch occlude = m_context.launch(m_occlude);
+    occlude.arg(m_shadow_queue).arg(static_cast<int>(live));
+    m_accel.bind(occlude, m_geometry).arg(m_materials).arg(m_shadow_light).run(live);
+    accumulate(m_shadow_light, live, m_shadow_queue, nullptr);
+  }
+}
+
+size_t DeviceTracer::countRays(const Buffer& tags, size_t count, std::array<std::uint64_t, 4>& kinds) {
+  const int blocks = compactBlocks(count);
+  m_context.launch(m_count).arg(tags).arg(static_cast<int>(count)).arg(kCompactBlock).arg(m_counts).run(blocks);
+  m_context.launch(m_scan).arg(m_counts).arg(blocks).arg(m_offsets).arg(m_totals).run(1);
+  std::int32_t totals[RAY_TOTALS];
+  m_totals.read(totals, sizeof totals);
+  for (int k = 0; k < RAY_KIND_COUNT; ++k) kinds[k] += static_cast<std::uint64_t>(totals[k]);
+  kinds[RAY_KIND_SHADOW] += static_cast<std::uint64_t>(totals[RAY_TOTAL_FEELERS]);
+  return static_cast<size_t>(totals[RAY_TOTAL_LIVE]);
+}
+
+size_t DeviceTracer::compact(const Buffer& in, const Buffer& tags, size_t count, Buffer& out,
+                         std::array<std::uint64_t, 4>& kinds) {
+  const size_t total = countRays(tags, count, kinds);
+  if (total == 0) return 0;
+  m_context.launch(m_scatter)
+      .arg(in)
+      .arg(tags)
+      .arg(static_cast<int>(count))
+      .arg(kCompactBlock)
+      .arg(m_offsets)
+      .arg(out)
+      .run(compactBlocks(count));
+  return static_cast<size_t>(total);
+}
+
+void DeviceTracer::accumulate(const Buffer& contributions, size_t count, const Buffer& rays, const Buffer* hits) {
+  m_context.launch(m_accumulate)
+      .arg(contributions)
+      .arg(static_cast<int>(count))
+      .arg(m_film)
+      .arg(m_first_bad)
+      .run(count);
+  if (!m_options->check_nan || m_stats->nan) return;
+  std::int32_t k = 0;
+  m_first_bad.read(&k, sizeof k);
+  if (k == std::numeric_limits<std::int32_t>::max()) return;
+  ContributionGpu c;
+  contributions.read(&c, sizeof c, static_cast<size_t>(k) * sizeof c);
+  RayGpu ray;
+  rays.read(&ray, sizeof ray, static_cast<size_t>(k) * sizeof ray);
+  NanFinding f;
+  f.sample = static_cast<std::uint64_t>(ray.pixel);
+  f.ray_kind = ray.kind;
+  f.depth = ray.depth;
+  f.origin = {ray.ox, ray.oy, ray.oz};
+  f.direction = {ray.dx, ray.dy, ray.dz};
+  f.value = {c.r, c.g, c.b, c.a};
+  if (hits) {
+    HitGpu hit;
+    hits->read(&hit, sizeof hit, static_cast<size_t>(k) * sizeof hit);
+    f.prim = hit.prim;
+    f.t = hit.t;
+  }
+  float xy[2] = {0, 0};
+  m_chunk_xy.read(xy, sizeof xy, static_cast<size_t>(ray.pixel - m_chunk_first) * sizeof xy);
+  f.film_x = xy[0];
+  f.film_y = xy[1];
+  m_stats->nan = f;
+}
+
+void DeviceTracer::zeroFill(Buffer& buffer, size_t bytes) {
+  if (bytes == 0) return;
+  const cl_float zero = 0.0f;
+  buffer.fill(&zero, sizeof zero, bytes);
+}
+
+void DeviceTracer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
+  const RenderOptions& opt = *m_options;
+  const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * opt.height;
+  const DeviceDescription& device = m_context.device();
+  const std::uint64_t max_alloc = device.max_alloc_bytes;
+  const std::uint64_t global = device.global_memory_bytes;
+  // Everything else this render keeps on the device: queues, scene, structure, AOVs.
+  std::uint64_t other = pixels * kBytesPerPixel + deviceGeometryBytes(*m_scene) +
+                        m_accel_bytes + m_tile.bytes();
+  for (const Buffer* b : {&m_work, &m_hits, &m_emit, &m_children, &m_child_tags, &m_surfaces, &m_shadows,
+                          &m_shadow_tags, &m_shadow_queue, &m_shadow_light, &m_counts, &m_offsets, &m_chunk_xy,
+                          &m_chunk_aov})
+    other += b->bytes();
+  for (const Buffer& b : m_levels) other += b.bytes();
+  if (m_firsthit && m_zbuffer)  // its per-sample buffers at their largest (a batch, or all samples if fewer)
+    other += m_firsthit->deviceBytes() + std::min<std::uint64_t>(kZBufferBatch, samples) * kZBufferBytesPerSample;
+
+  const std::uint64_t per_sample = kFilmBytesPerSample + (with_positions ? kPositionBytesPerSample : 0);
+  const std::uint64_t max_key = static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
+  std::uint64_t fit = std::min<std::uint64_t>(max_key, max_alloc / kFilmBytesPerSample);
+  fit = std::min<std::uint64_t>(fit, global > other ? (global - other) / per_sample : 0);
+  if (samples <= fit) return;
+  std::string advice;
+  const std::uint64_t per_pixel = fit / std::max<std::uint64_t>(1, pixels);
+  if (with_positions && m_options->spp > 1 && per_pixel >= 1)
+    advice = "use fewer samples per pixel (at most " + std::to_string(per_pixel) + " at " + std::to_string(opt.width) +
+             "x" + std::to_string(opt.height) + ") or a smaller image";
+  else
+    advice = "use a smaller image, fewer samples per pixel, or a lower adaptive level";
+  throw FilmTooLarge("the film needs " + std::to_string(samples) + " samples at " + std::to_string(per_sample) +
+                     " bytes each (" + gib(static_cast<double>(samples) * per_sample) + ") but device '" +
+                     device.name + "' takes at most " + gib(static_cast<double>(max_alloc)) + " in one buffer, " +
+                     gib(static_cast<double>(global)) + " in all (" + gib(static_cast<double>(other)) +
+                     " already used by this render), and a film index must stay under 2^31; " + advice);
+}
+
+}  // namespace prism
