@@ -104,12 +104,19 @@ PRISM_API void prismDefaultContextOptions(PrismContextOptions* options);
 
 /* Creates a context on the device chosen by `selector`: NULL or "" for the default
  * (the first GPU, else the first device), a decimal index, "cpu", "gpu", or a
- * case-insensitive substring of the device name. `options` may be NULL. */
+ * case-insensitive substring of the device name; or on several devices, which
+ * share each frame: "all", or a comma-separated list of such selectors ("0,2";
+ * no device twice). The first of them resolves the frame and answers ray
+ * queries. `options` may be NULL. */
 PRISM_API PrismStatus prismCreateContext(const char* selector, const PrismContextOptions* options,
                                          PrismContext* out_context);
 PRISM_API void prismReleaseContext(PrismContext context); /* NULL is a no-op */
-/* The description of the context's device. */
+/* The description of the context's (first) device. */
 PRISM_API PrismStatus prismGetContextDevice(PrismContext context, PrismDeviceInfo* info);
+/* How many devices the context deals its frames over, and each of them (position
+ * 0 is the first, the one prismGetContextDevice describes). */
+PRISM_API PrismStatus prismGetContextDeviceCount(PrismContext context, uint32_t* count);
+PRISM_API PrismStatus prismGetContextDeviceAt(PrismContext context, uint32_t position, PrismDeviceInfo* info);
 
 /* Called during prismRender with the fraction of work done (0..1); return nonzero
  * to cancel the render (prismRender then fails with PRISM_ERROR_INVALID_OPERATION). */
@@ -477,6 +484,24 @@ typedef struct PrismRenderStats {
 PRISM_API PrismStatus prismGetKernelTimeCount(PrismContext context, uint32_t* count);
 PRISM_API PrismStatus prismGetKernelTime(PrismContext context, uint32_t index, const char** name, double* seconds,
                                          uint64_t* launches);
+
+/* After a render: each device's part of the frame (position as in
+ * prismGetContextDeviceAt). A device that failed mid-frame (failed = 1, failure
+ * says why; the string is owned by the context, valid until its next render) was
+ * left out and its units traced again by the others; the image is the same. */
+typedef struct PrismDeviceShare {
+  size_t struct_size;     /* sizeof(PrismDeviceShare); set by the caller */
+  uint64_t units;         /* units of the sample sequence it finished */
+  uint64_t samples;       /* primary samples in them */
+  double busy_seconds;    /* wall time it spent on them */
+  uint32_t failed;
+  const char* failure;
+} PrismDeviceShare;
+PRISM_API PrismStatus prismGetRenderDeviceShare(PrismContext context, uint32_t position, PrismDeviceShare* share);
+/* After a render: its warnings (a device that failed mid-frame), one per index;
+ * owned by the context, valid until its next render. */
+PRISM_API PrismStatus prismGetRenderWarningCount(PrismContext context, uint32_t* count);
+PRISM_API PrismStatus prismGetRenderWarning(PrismContext context, uint32_t index, const char** message);
 
 /* After prismRender with options->check_nan set: the first contribution to the
  * film that was not finite (NaN or infinite), in render order (chunk by chunk of

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 struct PrismSceneImpl;
 
@@ -12,7 +13,8 @@ struct PrismSceneImpl;
 #include "scene/scene.h"
 
 struct PrismContextImpl {
-  std::unique_ptr<prism::Context> context;
+  std::unique_ptr<prism::Context> context;  // the first device: ray queries, and the frame's resolve
+  std::vector<std::unique_ptr<prism::Context>> more;  // further devices a frame is dealt out over
   std::unique_ptr<prism::Renderer> renderer;  // built on first render
   prism::RenderResult last;                   // AOVs of the last render
   bool has_render = false;

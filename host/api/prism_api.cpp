@@ -117,7 +117,11 @@ PrismStatus loadInto(Scene scene, PrismScene* out) {
 RenderResult renderScene(PrismContext context, PrismScene scene, const PrismRenderOptions* options) {
   RenderOptions opts = options ? fromC(*options) : RenderOptions::fromScene(scene->scene);
   opts.validate();
-  if (!context->renderer) context->renderer = std::make_unique<Renderer>(*context->context);
+  if (!context->renderer) {
+    std::vector<Context*> devices{context->context.get()};
+    for (auto& c : context->more) devices.push_back(c.get());
+    context->renderer = std::make_unique<Renderer>(devices);
+  }
   ProgressFn progress;
   if (context->progress) progress = [context](double f) { return context->progress(context->progress_user, f) == 0; };
   return context->renderer->render(scene->scene, opts, progress);  // FilmTooLarge: guarded() says OUT_OF_MEMORY
@@ -226,7 +230,9 @@ PRISM_API PrismStatus prismCreateContext(const char* selector, const PrismContex
   return guarded(__func__, [&] {
     bool use_cache = options ? options->use_kernel_cache != 0 : true;
     auto impl = std::make_unique<PrismContextImpl>();
-    impl->context = std::make_unique<Context>(selectDevice(selector ? selector : ""), use_cache);
+    std::vector<DeviceDescription> devices = selectDevices(selector ? selector : "");
+    impl->context = std::make_unique<Context>(devices.front(), use_cache);
+    for (size_t i = 1; i < devices.size(); ++i) impl->more.push_back(std::make_unique<Context>(devices[i], use_cache));
     *out_context = impl.release();
     return PRISM_OK;
   });
@@ -237,6 +243,20 @@ PRISM_API void prismReleaseContext(PrismContext context) { delete context; }
 PRISM_API PrismStatus prismGetContextDevice(PrismContext context, PrismDeviceInfo* info) {
   PRISM_REQUIRE(context && info, "prismGetContextDevice: NULL argument");
   *info = toInfo(context->context->device());
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetContextDeviceCount(PrismContext context, uint32_t* count) {
+  PRISM_REQUIRE(context && count, "prismGetContextDeviceCount: NULL argument");
+  *count = static_cast<uint32_t>(1 + context->more.size());
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetContextDeviceAt(PrismContext context, uint32_t position, PrismDeviceInfo* info) {
+  PRISM_REQUIRE(context && info, "prismGetContextDeviceAt: NULL argument");
+  PRISM_REQUIRE(position <= context->more.size(),
+                "prismGetContextDeviceAt: position is not below prismGetContextDeviceCount's count");
+  *info = toInfo(position == 0 ? context->context->device() : context->more[position - 1]->device());
   return PRISM_OK;
 }
 
@@ -387,6 +407,42 @@ PRISM_API PrismStatus prismGetKernelTime(PrismContext context, uint32_t index, c
   *name = kernels[index].name.c_str();
   *seconds = kernels[index].seconds;
   *launches = kernels[index].launches;
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetRenderDeviceShare(PrismContext context, uint32_t position, PrismDeviceShare* share) {
+  PRISM_REQUIRE(context && share, "prismGetRenderDeviceShare: NULL argument");
+  PRISM_REQUIRE(share->struct_size >= sizeof(PrismDeviceShare),
+                "prismGetRenderDeviceShare: share->struct_size is too small (set it to sizeof(PrismDeviceShare))");
+  if (!context->has_render)
+    return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetRenderDeviceShare: no render yet");
+  const std::vector<DeviceShare>& devices = context->last.stats.devices;
+  PRISM_REQUIRE(position < devices.size(), "prismGetRenderDeviceShare: position " + std::to_string(position) +
+                                               " is not below the " + std::to_string(devices.size()) +
+                                               " devices of the render");
+  const DeviceShare& d = devices[position];
+  share->units = d.units;
+  share->samples = d.samples;
+  share->busy_seconds = d.busy_seconds;
+  share->failed = d.failed ? 1 : 0;
+  share->failure = d.failure.c_str();
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetRenderWarningCount(PrismContext context, uint32_t* count) {
+  PRISM_REQUIRE(context && count, "prismGetRenderWarningCount: NULL argument");
+  if (!context->has_render) return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetRenderWarningCount: no render yet");
+  *count = static_cast<uint32_t>(context->last.stats.warnings.size());
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetRenderWarning(PrismContext context, uint32_t index, const char** message) {
+  PRISM_REQUIRE(context && message, "prismGetRenderWarning: NULL argument");
+  if (!context->has_render) return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetRenderWarning: no render yet");
+  const std::vector<std::string>& warnings = context->last.stats.warnings;
+  PRISM_REQUIRE(index < warnings.size(), "prismGetRenderWarning: index " + std::to_string(index) +
+                                             " is not below the " + std::to_string(warnings.size()) + " warnings");
+  *message = warnings[index].c_str();
   return PRISM_OK;
 }
 

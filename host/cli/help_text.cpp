@@ -155,13 +155,17 @@ Speed:
 Device:
   --device D        the OpenCL device: an index from 'prism devices', 'cpu', 'gpu', or
                     part of the device name (case-insensitive). Default: the first
-                    GPU, else the first device.
+                    GPU, else the first device. 'all', or a list such as 0,2, shares
+                    each frame over several devices: a faster one takes more of it,
+                    one that fails mid-frame is left out with a warning, and the
+                    image is the same bit for bit as on one device of that kind
   --no-cache        compile the kernels afresh, without reading or filling the kernel
                     cache (see PRISM_CACHE_DIR in 'prism --help')
 
 Messages:
   --stats           after the summary, where the render's time went: set-up (kernels,
-                    structure) and tracing, and each kernel's device time (profiled)
+                    structure) and tracing, and each kernel's device time (profiled);
+                    with several devices, how much of the frame each one traced
   --check-nan       watch every ray's contribution for NaN and infinity; name the first
                     (its sample, pixel, ray and hit) and the first such pixel of the
                     image, and exit with 3 if there is one (the image is still written)

@@ -187,7 +187,20 @@ int writeOutput(const RenderRequest& request, PrismContext context, const PrismR
   return kExitOk;
 }
 
-void printSummary(const RenderRequest& request, const PrismRenderOptions& options, const PrismDeviceInfo& device,
+// "'name'", or "2 devices ('a', 'b')" for a context over several.
+std::string devicesText(PrismContext context) {
+  uint32_t count = 0;
+  if (prismGetContextDeviceCount(context, &count) != PRISM_OK || count == 0) return "?";
+  std::string names;
+  for (uint32_t i = 0; i < count; ++i) {
+    PrismDeviceInfo info{};
+    if (prismGetContextDeviceAt(context, i, &info) != PRISM_OK) return "?";
+    names += (i ? ", '" : "'") + std::string(info.name) + "'";
+  }
+  return count == 1 ? names : std::to_string(count) + " devices (" + names + ")";
+}
+
+void printSummary(const RenderRequest& request, const PrismRenderOptions& options, const std::string& devices,
                   const PrismRenderStats& stats) {
   const uint64_t total = stats.primary_rays + stats.reflected_rays + stats.refracted_rays + stats.shadow_rays;
   // Throughput over tracing alone: set-up (kernels built on a cold start, the
@@ -203,12 +216,12 @@ void printSummary(const RenderRequest& request, const PrismRenderOptions& option
   const char* first_hit = prismFirstHitName(static_cast<PrismFirstHit>(stats.first_hit_used));
   const char* shadows = prismShadowsName(static_cast<PrismShadows>(stats.shadows_used));
   std::printf(
-      "prism: rendered %ux%u at %u spp on '%s' with %s (built in %.2f s) in %.2f s (kernels %.2f s, first launches "
+      "prism: rendered %ux%u at %u spp on %s with %s (built in %.2f s) in %.2f s (kernels %.2f s, first launches "
       "%.2f s): "
       "%s, %.3f rays/pixel, first hit by %s, shadows by %s, set-up %.2f s, tracing %.2f s; "
       "%llu primary, %llu reflected, %llu refracted, %llu shadow rays, %.2f Mrays/s -> %s\n",
       static_cast<unsigned>(options.width), static_cast<unsigned>(options.height),
-      static_cast<unsigned>(options.spp), device.name, accel.c_str(), stats.accel_build_seconds,
+      static_cast<unsigned>(options.spp), devices.c_str(), accel.c_str(), stats.accel_build_seconds,
       stats.seconds, stats.kernel_build_seconds, stats.first_launch_seconds, samplingText(options).c_str(),
       stats.rays_per_pixel, first_hit ? first_hit : "?", shadows ? shadows : "?", stats.setup_seconds, tracing,
       static_cast<unsigned long long>(stats.primary_rays),
@@ -241,6 +254,24 @@ void printStageTimes(PrismContext context, const PrismRenderStats& stats) {
   const double rest = std::max(0.0, stats.trace_seconds - device);
   std::printf("  %-16s %10s %12.4f %9.1f%%  (host work, waits and transfers)\n", "other", "", rest,
               stats.trace_seconds > 0 ? 100.0 * rest / stats.trace_seconds : 0.0);
+}
+
+// --stats with several devices: how the frame was shared.
+void printDeviceShares(PrismContext context) {
+  uint32_t count = 0;
+  if (prismGetContextDeviceCount(context, &count) != PRISM_OK || count < 2) return;
+  std::printf("  %-40s %8s %12s %10s\n", "device", "units", "samples", "busy s");
+  for (uint32_t i = 0; i < count; ++i) {
+    PrismDeviceInfo info{};
+    PrismDeviceShare share{};
+    share.struct_size = sizeof share;
+    if (prismGetContextDeviceAt(context, i, &info) != PRISM_OK ||
+        prismGetRenderDeviceShare(context, i, &share) != PRISM_OK)
+      return;
+    std::printf("  [%u] %-36.36s %8llu %12llu %10.3f%s\n", info.index, info.name,
+                static_cast<unsigned long long>(share.units), static_cast<unsigned long long>(share.samples),
+                share.busy_seconds, share.failed ? "  (failed)" : "");
+  }
 }
 
 // --check-nan: the first non-finite contribution with its ray, and the first
@@ -335,8 +366,7 @@ int runRender(const std::vector<std::string>& args) {
   const char* selector = request.device.empty() ? nullptr : request.device.c_str();
   if (prismCreateContext(selector, &context_options, &raw_context) != PRISM_OK) return failWithLastError();
   const ContextHandle context(raw_context);
-  PrismDeviceInfo device{};
-  if (prismGetContextDevice(context.get(), &device) != PRISM_OK) return failWithLastError();
+  const std::string devices = devicesText(context.get());
 
   std::vector<float> rgba(static_cast<size_t>(options.width) * options.height * 4);
   PrismRenderStats stats{};
@@ -355,11 +385,20 @@ int runRender(const std::vector<std::string>& args) {
     }
   }
   if (status != PRISM_OK) return failWithLastError();
+  uint32_t warnings = 0;
+  prismGetRenderWarningCount(context.get(), &warnings);
+  for (uint32_t i = 0; i < warnings; ++i) {
+    const char* message = nullptr;
+    if (prismGetRenderWarning(context.get(), i, &message) == PRISM_OK) std::fprintf(stderr, "prism: warning: %s\n", message);
+  }
 
   const int written = writeOutput(request, context.get(), options, rgba);
   if (written != kExitOk) return written;
-  if (!request.quiet) printSummary(request, options, device, stats);
-  if (request.stats) printStageTimes(context.get(), stats);
+  if (!request.quiet) printSummary(request, options, devices, stats);
+  if (request.stats) {
+    printStageTimes(context.get(), stats);
+    printDeviceShares(context.get());
+  }
   if (request.check_nan && reportNotFinite(context.get(), options, rgba)) return kExitNotFinite;
   return kExitOk;
 }

@@ -120,4 +120,33 @@ DeviceDescription selectDevice(const std::string& selector) {
                     describeAll(devices));
 }
 
+std::vector<DeviceDescription> selectDevices(const std::string& selector) {
+  if (lower(selector) == "all") {
+    std::vector<DeviceDescription> devices = listDevices();
+    if (devices.empty())
+      throw DeviceError(
+          "no OpenCL device found: install an OpenCL driver (on Debian: apt-get install pocl-opencl-icd)");
+    return devices;
+  }
+  if (selector.find(',') == std::string::npos) return {selectDevice(selector)};
+  std::vector<DeviceDescription> chosen;
+  size_t begin = 0;
+  for (;;) {
+    const size_t end = selector.find(',', begin);
+    const std::string part = selector.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    if (part.empty() || lower(part) == "all")
+      throw DeviceError("devices '" + selector + "': each comma-separated part names one device (an index, cpu, gpu " +
+                        "or part of a name); 'all' stands alone");
+    DeviceDescription d = selectDevice(part);
+    for (const DeviceDescription& c : chosen)
+      if (c.index == d.index)
+        throw DeviceError("devices '" + selector + "': device " + std::to_string(d.index) + " (" + d.name +
+                          ") is named twice");
+    chosen.push_back(std::move(d));
+    if (end == std::string::npos) break;
+    begin = end + 1;
+  }
+  return chosen;
+}
+
 }  // namespace prism

@@ -33,4 +33,9 @@ std::vector<DeviceDescription> listDevices();
 // listing the devices when nothing matches.
 DeviceDescription selectDevice(const std::string& selector);
 
+// The devices one frame is dealt out over: "all" (every device, in index
+// order), a comma-separated list of selectors as above ("0,2", "gpu,cpu"; no
+// device twice), or one selector. Throws DeviceError as selectDevice does.
+std::vector<DeviceDescription> selectDevices(const std::string& selector);
+
 }  // namespace prism

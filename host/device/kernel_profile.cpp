@@ -50,4 +50,17 @@ std::vector<KernelTime> KernelProfile::stop() {
   return out;
 }
 
+void mergeKernelTimes(std::vector<KernelTime>& into, const std::vector<KernelTime>& more) {
+  for (const KernelTime& m : more) {
+    auto same = std::find_if(into.begin(), into.end(), [&](const KernelTime& k) { return k.name == m.name; });
+    if (same == into.end()) {
+      into.push_back(m);
+    } else {
+      same->seconds += m.seconds;
+      same->launches += m.launches;
+    }
+  }
+  std::stable_sort(into.begin(), into.end(), [](const KernelTime& a, const KernelTime& b) { return a.seconds > b.seconds; });
+}
+
 }  // namespace prism

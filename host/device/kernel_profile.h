@@ -18,6 +18,9 @@ struct KernelTime {
   std::uint64_t launches = 0;
 };
 
+// Adds `more` into `into` by kernel name (the devices of one frame), longest first.
+void mergeKernelTimes(std::vector<KernelTime>& into, const std::vector<KernelTime>& more);
+
 class KernelProfile {
  public:
   KernelProfile() = default;

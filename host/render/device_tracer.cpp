@@ -64,7 +64,7 @@ DeviceTracer::DeviceTracer(Context& context) : m_context(context) {
 
 DeviceTracer::~DeviceTracer() = default;
 
-void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats) {
+void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats, bool mark_aovs) {
   const GpuScene& gpu = *frame.scene;
   const RenderOptions& options = *frame.options;
   const DeviceAccel& accel = *frame.accel;
@@ -130,6 +130,10 @@ void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats) {
   m_aov_normal = Buffer(m_context, pixels * 3 * sizeof(float));
   m_aov_primid = Buffer(m_context, pixels * sizeof(std::int32_t));
   m_aov_albedo = Buffer(m_context, pixels * 3 * sizeof(float));
+  if (mark_aovs) {
+    const std::int32_t unwritten = kAovUnwritten;
+    m_aov_primid.fill(&unwritten, sizeof unwritten, pixels * sizeof unwritten);
+  }
 
   m_levels.clear();
   m_levels.emplace_back();  // depth 0 is generated chunk by chunk straight into m_work
@@ -236,6 +240,16 @@ std::vector<float> DeviceTracer::resolvePixels() {
       .arg(m_pixels)
       .run(pixels);
   return m_pixels.readVector<float>(pixels * 4);
+}
+
+void DeviceTracer::readSamples(std::uint64_t first, size_t n, float* rgba, float* xy) const {
+  m_film.read(rgba, n * kFilmBytesPerSample, first * kFilmBytesPerSample);
+  m_sample_xy.read(xy, n * kPositionBytesPerSample, first * kPositionBytesPerSample);
+}
+
+void DeviceTracer::writeSamples(std::uint64_t first, size_t n, const float* rgba, const float* xy) {
+  m_film.write(rgba, n * kFilmBytesPerSample, first * kFilmBytesPerSample);
+  m_sample_xy.write(xy, n * kPositionBytesPerSample, first * kPositionBytesPerSample);
 }
 
 std::vector<float> DeviceTracer::traceFilmPositions(const std::vector<float>& xy,
@@ -442,7 +456,9 @@ void DeviceTracer::accumulate(const Buffer& contributions, size_t count, const B
   RayGpu ray;
   rays.read(&ray, sizeof ray, static_cast<size_t>(k) * sizeof ray);
   NanFinding f;
-  f.sample = static_cast<std::uint64_t>(ray.pixel);
+  // Adaptive keys count from their batch: the finding names the position's
+  // index in the frame (m_group_base is 0 for the other modes).
+  f.sample = static_cast<std::uint64_t>(m_group_base + ray.pixel);
   f.ray_kind = ray.kind;
   f.depth = ray.depth;
   f.origin = {ray.ox, ray.oy, ray.oz};

@@ -67,8 +67,11 @@ class DeviceTracer {
   Context& context() { return m_context; }
 
   // Uploads the scene, builds (or finds) the kernels it needs and sizes the
-  // queues; counts go into `stats` until the next load.
-  void load(const FrameSetup& frame, RenderStats& stats);
+  // queues; counts go into `stats` until the next load. mark_aovs: the AOV
+  // pixels no sample of this device writes read primid kAovUnwritten (a frame
+  // dealt over several devices takes each pixel from the one that wrote it).
+  void load(const FrameSetup& frame, RenderStats& stats, bool mark_aovs = false);
+  static constexpr std::int32_t kAovUnwritten = -2147483647 - 1;
   // Lets go of the per-sample film and the scene's reference (keeps the kernels).
   void unload();
 
@@ -81,6 +84,11 @@ class DeviceTracer {
   void traceSamples(std::uint64_t first, std::uint64_t end, const std::function<void(std::uint64_t)>& done);
   // The film filtered into pixels (rgba).
   std::vector<float> resolvePixels();
+  // The film entries (rgba) and positions (x, y) of samples [first, first + n),
+  // read from this device or written into its film (to gather a frame that
+  // several devices traced on the one that resolves it).
+  void readSamples(std::uint64_t first, size_t n, float* rgba, float* xy) const;
+  void writeSamples(std::uint64_t first, size_t n, const float* rgba, const float* xy);
 
   // Adaptive sampling: the rgba radiance of a primary sample through each
   // (x, y) of `xy`, exactly as a render computes it, and the AOVs of

@@ -7,11 +7,13 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "accel/accel_structure.h"
 #include "device/kernel_profile.h"
 #include "render/render_options.h"
+#include "render/work_dealer.h"
 #include "scene/sampling_options.h"
 
 namespace prism {
@@ -55,6 +57,8 @@ struct RenderStats {
   double first_launch_seconds = 0;
   std::vector<KernelTime> kernels;   // with RenderOptions::profile: device time per kernel, longest first
   std::optional<NanFinding> nan;     // with RenderOptions::check_nan, where one was found
+  std::vector<DeviceShare> devices;  // each device's part of the frame, in the order they were given
+  std::vector<std::string> warnings; // a device that failed mid-frame, and the like
 
   std::uint64_t totalRays() const { return rays_by_kind[0] + rays_by_kind[1] + rays_by_kind[2] + rays_by_kind[3]; }
 };

@@ -6,17 +6,27 @@
 #include <string>
 
 #include "kernels/shared/ray_gpu.h"
+#include "device/cl_error.h"
 #include "render/light_buffer.h"
+#include "render/work_dealer.h"
 
 namespace prism {
 
-Renderer::Renderer(Context& context) : m_context(context), m_tracer(context) {}
+Renderer::Renderer(Context& context) : Renderer(std::vector<Context*>{&context}) {}
+
+Renderer::Renderer(const std::vector<Context*>& contexts) : m_contexts(contexts) {
+  if (contexts.empty()) throw std::invalid_argument("Renderer: no device");
+  for (size_t i = 0; i < contexts.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (contexts[i] == contexts[j]) throw std::invalid_argument("Renderer: the same device context twice");
+  for (Context* c : contexts) m_tracers.push_back(std::make_unique<DeviceTracer>(*c));
+}
 
 Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, const ProgressFn& progress) {
   options.validate();
-  m_context.takeFirstLaunchSeconds();  // launches before this render are not its start-up
+  for (Context* c : m_contexts) c->takeFirstLaunchSeconds();  // launches before this render are not its start-up
   auto start = std::chrono::steady_clock::now();
   const SamplingOptions sampling = options.sampling();
   // The first-hit pass serves rays that leave one point at one instant.
@@ -41,12 +51,13 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   result.stats.aa = sampling.mode;
   result.stats.filter = sampling.effectiveFilter();
   result.stats.first_hit = first_hit;
-  if (options.profile) m_context.profile().start();
+  if (options.profile)
+    for (Context* c : m_contexts) c->profile().start();
   struct Reset {
     Renderer* r;
     ~Reset() {
-      r->m_context.profile().discard();  // what a finished render did not take
-      r->m_tracer.unload();
+      for (Context* c : r->m_contexts) c->profile().discard();  // what a finished render did not take
+      for (auto& t : r->m_tracers) t->unload();
     }
   } reset{this};
 
@@ -70,7 +81,25 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   frame.sampling = sampling;
   frame.zbuffer = first_hit == FirstHitMode::ZBuffer;
   frame.distributed_camera = !pinhole;
-  m_tracer.load(frame, result.stats);
+  // Every device gets the scene. With several, one that fails here is left out
+  // (a warning), as it would be mid-frame.
+  const size_t k = m_tracers.size();
+  m_device_stats.assign(k, RenderStats{});
+  result.stats.devices.assign(k, DeviceShare{});
+  for (size_t i = 0; i < k; ++i) {
+    DeviceShare& share = result.stats.devices[i];
+    share.device = m_contexts[i]->device().name;
+    try {
+      m_tracers[i]->load(frame, m_device_stats[i], k > 1);
+    } catch (const DeviceError& e) {
+      if (k == 1) throw;
+      share.failed = true;
+      share.failure = e.what();
+      result.stats.warnings.push_back("device '" + share.device + "' could not take the scene and was left out: " +
+                                      e.what());
+    }
+  }
+  if (survivor(result.stats) == k) throw DeviceError("no device could take the scene: " + result.stats.devices[0].failure);
 
   result.stats.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (sampling.mode == AaMode::Adaptive)
@@ -78,37 +107,127 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   else
     renderSamples(sampling, options, result, progress);
 
+  // The devices' counts (those of a device that failed were traced again by
+  // the others, so they are left out).
+  RenderStats& stats = result.stats;
+  for (size_t i = 0; i < k; ++i) {
+    if (stats.devices[i].failed) continue;
+    const RenderStats& d = m_device_stats[i];
+    for (size_t j = 0; j < stats.rays_by_kind.size(); ++j) stats.rays_by_kind[j] += d.rays_by_kind[j];
+    for (size_t j = 0; j < stats.rays_per_depth.size(); ++j) stats.rays_per_depth[j] += d.rays_per_depth[j];
+    stats.waves = std::max(stats.waves, d.waves);
+    stats.film_batches += d.film_batches;
+    if (d.nan && (!stats.nan || d.nan->sample < stats.nan->sample)) stats.nan = d.nan;
+  }
   const size_t pixels = static_cast<size_t>(options.width) * options.height;
-  result.stats.rays_per_pixel =
-      static_cast<double>(result.stats.rays_by_kind[RAY_KIND_PRIMARY]) / static_cast<double>(pixels);
-  m_tracer.readAovs(result.depth, result.normal, result.primid, result.albedo);
-  m_tracer.unload();
-  result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.stats.first_launch_seconds = m_context.takeFirstLaunchSeconds();
-  if (options.profile) result.stats.kernels = m_context.profile().stop();
+  stats.rays_per_pixel = static_cast<double>(stats.rays_by_kind[RAY_KIND_PRIMARY]) / static_cast<double>(pixels);
+  // AOVs: each pixel from the device whose sample wrote it.
+  const size_t first = survivor(stats);
+  m_tracers[first]->readAovs(result.depth, result.normal, result.primid, result.albedo);
+  for (size_t i = first + 1; i < k; ++i) {
+    if (stats.devices[i].failed) continue;
+    std::vector<float> depth, normal, albedo;
+    std::vector<std::int32_t> primid;
+    m_tracers[i]->readAovs(depth, normal, primid, albedo);
+    for (size_t p = 0; p < pixels; ++p) {
+      if (primid[p] == DeviceTracer::kAovUnwritten) continue;
+      result.primid[p] = primid[p];
+      result.depth[p] = depth[p];
+      for (int c = 0; c < 3; ++c) {
+        result.normal[3 * p + c] = normal[3 * p + c];
+        result.albedo[3 * p + c] = albedo[3 * p + c];
+      }
+    }
+  }
+  for (auto& t : m_tracers) t->unload();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The devices start up side by side: the frame waited for the slowest.
+  for (Context* c : m_contexts) stats.first_launch_seconds = std::max(stats.first_launch_seconds, c->takeFirstLaunchSeconds());
+  if (options.profile) {
+    for (Context* c : m_contexts) mergeKernelTimes(stats.kernels, c->profile().stop());
+  }
   return result;
+}
+
+void Renderer::setFilmBatchSlices(size_t slices) {
+  for (auto& t : m_tracers) t->setFilmBatchSlices(slices);
+}
+
+void Renderer::injectDeviceFault(size_t device, std::uint64_t unit) {
+  if (device >= m_tracers.size()) throw std::invalid_argument("injectDeviceFault: no such device");
+  m_faults.emplace_back(device, unit);
+}
+
+size_t Renderer::survivor(const RenderStats& stats) const {
+  for (size_t i = 0; i < stats.devices.size(); ++i)
+    if (!stats.devices[i].failed) return i;
+  return stats.devices.size();
+}
+
+std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_samples,
+                                   const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
+                                   const ProgressFn& progress) {
+  std::vector<std::uint64_t> started(m_tracers.size(), 0);
+  const UnitFn traced = [&](size_t d, size_t u) {
+    for (const auto& [device, at] : m_faults)
+      if (d == device && started[d] == at)
+        throw DeviceError("injected fault (Renderer::injectDeviceFault) at its unit " + std::to_string(at));
+    ++started[d];
+    unit(*m_tracers[d], u);
+  };
+  // With one device, progress comes chunk by chunk from the unit itself.
+  std::function<bool(size_t, size_t)> step;
+  if (m_tracers.size() > 1 && progress)
+    step = [&](size_t done, size_t units) { return progress(static_cast<double>(done) / static_cast<double>(units)); };
+  DealResult dealt = dealUnits(result.stats.devices, unit_samples, traced, step);
+  for (std::string& w : dealt.warnings) result.stats.warnings.push_back(std::move(w));
+  if (dealt.cancelled) throw RenderCancelled();
+  return dealt.owner;
 }
 
 void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOptions& opt, RenderResult& result,
                              const ProgressFn& progress) {
   const std::uint64_t total = sampleCount(sampling.mode, opt.width, opt.height, sampling.spp);
-  m_tracer.beginSampleFilm(total);
-  // The Z-buffer rasterises a batch of samples at once; tracing alone goes
-  // chunk by chunk through the whole sequence.
-  const std::uint64_t batch = result.stats.first_hit == FirstHitMode::ZBuffer ? DeviceTracer::kZBufferBatch : total;
-  for (std::uint64_t first = 0; first < total; first += batch)
-    m_tracer.traceSamples(first, std::min(total, first + batch), [&](std::uint64_t done) {
-      if (progress && !progress(static_cast<double>(done) / static_cast<double>(total))) throw RenderCancelled();
-    });
-  result.rgba = m_tracer.resolvePixels();
+  const bool several = m_tracers.size() > 1;
+  for (size_t i = 0; i < m_tracers.size(); ++i)
+    if (!result.stats.devices[i].failed) m_tracers[i]->beginSampleFilm(total);
+  // Units: a slice (one chunk), or the Z-buffer's batch, which it rasterises at once.
+  const std::uint64_t unit_size =
+      result.stats.first_hit == FirstHitMode::ZBuffer ? DeviceTracer::kZBufferBatch : DeviceTracer::kSliceRays;
+  std::vector<std::uint64_t> unit_samples;
+  for (std::uint64_t first = 0; first < total; first += unit_size) unit_samples.push_back(std::min(unit_size, total - first));
+  const std::vector<size_t> owner = deal(
+      unit_samples,
+      [&](DeviceTracer& tracer, size_t u) {
+        const std::uint64_t first = u * unit_size;
+        tracer.traceSamples(first, first + unit_samples[u], [&](std::uint64_t done) {
+          if (!several && progress && !progress(static_cast<double>(done) / static_cast<double>(total)))
+            throw RenderCancelled();
+        });
+      },
+      result, progress);
+  // The units other devices traced go to the one that resolves the frame.
+  const size_t resolver = survivor(result.stats);
+  std::vector<float> rgba, xy;
+  for (size_t u = 0; u < owner.size(); ++u) {
+    if (owner[u] == resolver) continue;
+    const std::uint64_t first = u * unit_size;
+    const size_t n = static_cast<size_t>(unit_samples[u]);
+    rgba.resize(4 * n);
+    xy.resize(2 * n);
+    m_tracers[owner[u]]->readSamples(first, n, rgba.data(), xy.data());
+    m_tracers[resolver]->writeSamples(first, n, rgba.data(), xy.data());
+  }
+  result.rgba = m_tracers[resolver]->resolvePixels();
 }
 
 void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptions& opt, RenderResult& result,
                               const ProgressFn& progress) {
   const std::int64_t w = opt.width, h = opt.height;
   // Passes: the corners, then at most one per level. Progress counts passes, each
-  // in proportion to its chunks done.
+  // in proportion to its chunks (with several devices, its units) done.
   const double passes = 1.0 + sampling.adaptive_max_level;
+  const bool several = m_tracers.size() > 1;
   int pass = 0;
   std::uint64_t traced = 0;  // positions of the passes before
   TraceFn trace = [&](const std::vector<float>& xy) {
@@ -121,10 +240,29 @@ void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptio
       if (x == std::floor(x) && y == std::floor(y) && x < w && y < h)
         aov[k] = static_cast<std::int32_t>(static_cast<std::int64_t>(y) * w + static_cast<std::int64_t>(x));
     }
-    std::vector<float> rgba = m_tracer.traceFilmPositions(xy, aov, traced, [&](size_t done) {
-      if (progress && !progress(std::min(1.0, (pass + static_cast<double>(done) / n) / passes)))
-        throw RenderCancelled();
-    });
+    // One unit with one device; with several, whole chunks (or Z-buffer
+    // batches), counted from the pass's first position as one device counts them.
+    const size_t unit_size = !several ? std::max<size_t>(n, 1)
+                             : result.stats.first_hit == FirstHitMode::ZBuffer ? DeviceTracer::kZBufferBatch
+                                                                               : DeviceTracer::kSliceRays;
+    std::vector<std::uint64_t> unit_samples;
+    for (size_t first = 0; first < n; first += unit_size) unit_samples.push_back(std::min(unit_size, n - first));
+    std::vector<float> rgba(4 * n);
+    deal(
+        unit_samples,
+        [&](DeviceTracer& tracer, size_t u) {
+          const size_t first = u * unit_size, m = static_cast<size_t>(unit_samples[u]);
+          const std::vector<float> part_xy(xy.begin() + 2 * first, xy.begin() + 2 * (first + m));
+          const std::vector<std::int32_t> part_aov(aov.begin() + first, aov.begin() + first + m);
+          const std::vector<float> part = tracer.traceFilmPositions(part_xy, part_aov, traced + first, [&](size_t done) {
+            if (!several && progress && !progress(std::min(1.0, (pass + static_cast<double>(done) / n) / passes)))
+              throw RenderCancelled();
+          });
+          std::copy(part.begin(), part.end(), rgba.begin() + 4 * first);
+        },
+        result,
+        several && progress ? ProgressFn([&](double f) { return progress(std::min(1.0, (pass + f) / passes)); })
+                            : ProgressFn());
     ++pass;
     traced += n;
     return rgba;

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "accel/accel_buffers.h"
@@ -48,11 +49,16 @@ using ProgressFn = std::function<bool(double)>;
 
 // The frame: what it needs (the scene flattened for the kernels, its structure
 // and light buffer built on the host, the first-hit and shadow choices), which
-// ranges of the sample sequence make it, and their film resolved into pixels.
-// The tracing itself is a DeviceTracer's (render/device_tracer.h).
+// units of the sample sequence make it, dealt out over one or more devices
+// (render/work_dealer.h), and their film resolved into pixels. The tracing
+// itself is a DeviceTracer's (render/device_tracer.h), one per device. The
+// image is the same bit for bit whatever the number and order of devices of
+// one kind: a unit is a whole number of the chunks a single device traces.
 class Renderer {
  public:
   explicit Renderer(Context& context);
+  // Several devices (the first resolves the frame, unless it fails); none twice.
+  explicit Renderer(const std::vector<Context*>& contexts);
   ~Renderer();
   RenderResult render(const Scene& scene, const RenderOptions& options, const ProgressFn& progress = {});
 
@@ -62,26 +68,42 @@ class Renderer {
   // (256 by default: 16M positions, 256 MiB); the colours go back to the host
   // after each batch. The image does not depend on it; tests set it low to
   // exercise batching on small images.
-  void setFilmBatchSlices(size_t slices) { m_tracer.setFilmBatchSlices(slices); }
-  size_t filmBatchSlices() const { return m_tracer.filmBatchSlices(); }
+  void setFilmBatchSlices(size_t slices);
+  size_t filmBatchSlices() const { return m_tracers.front()->filmBatchSlices(); }
 
   // How the next renders build their acceleration structure (the defaults
   // unless set); the image does not depend on it.
   void setAccelBuildOptions(const AccelBuildOptions& options) { m_accel_build = options; }
+
+  // A fault to inject (tests): device `device` (its position among this
+  // renderer's) throws DeviceError when it starts its unit number `unit` (from
+  // 0) of each later render; its part goes to the others. Faults add up;
+  // clearDeviceFaults forgets them.
+  void injectDeviceFault(size_t device, std::uint64_t unit);
+  void clearDeviceFaults() { m_faults.clear(); }
 
  private:
   // The sampling modes whose positions come from kernels/supersample.cl, resolved
   // by kernels/resolve.cl.
   void renderSamples(const SamplingOptions& sampling, const RenderOptions& options, RenderResult& result,
                      const ProgressFn& progress);
-  // Adaptive sampling: adaptiveSample (render/sampler.h) driving the tracer's
+  // Adaptive sampling: adaptiveSample (render/sampler.h) driving the tracers'
   // traceFilmPositions.
   void renderAdaptive(const SamplingOptions& sampling, const RenderOptions& options, RenderResult& result,
                       const ProgressFn& progress);
+  // Runs unit(tracer, u) for every unit over the devices; fills
+  // result.stats.devices and its warnings; returns which tracer did each unit.
+  std::vector<size_t> deal(const std::vector<std::uint64_t>& unit_samples,
+                           const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
+                           const ProgressFn& progress);
+  // The first device that did not fail this frame.
+  size_t survivor(const RenderStats& stats) const;
 
-  Context& m_context;
-  DeviceTracer m_tracer;
+  std::vector<Context*> m_contexts;
+  std::vector<std::unique_ptr<DeviceTracer>> m_tracers;
+  std::vector<RenderStats> m_device_stats;  // each tracer's counts this frame
   AccelBuildOptions m_accel_build;
+  std::vector<std::pair<size_t, std::uint64_t>> m_faults;  // (device, unit)
 };
 
 }  // namespace prism

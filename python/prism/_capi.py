@@ -56,6 +56,11 @@ class NanReport(Structure):
                 ("direction", float3), ("primitive", c_int32), ("t", c_float), ("value", c_float * 4)]
 
 
+class DeviceShare(Structure):
+    _fields_ = [("struct_size", c_size_t), ("units", c_uint64), ("samples", c_uint64), ("busy_seconds", c_double),
+                ("failed", c_uint32), ("failure", c_char_p)]
+
+
 class RenderStats(Structure):
     _fields_ = [("struct_size", c_size_t), ("seconds", c_double), ("kernel_build_seconds", c_double),
                 ("primary_rays", c_uint64), ("reflected_rays", c_uint64), ("refracted_rays", c_uint64),
@@ -93,6 +98,11 @@ _FUNCTIONS = {
     "prismCreateContext": (Status, [c_char_p, c_void_p, POINTER(c_void_p)]),
     "prismReleaseContext": (None, [c_void_p]),
     "prismGetContextDevice": (Status, [c_void_p, POINTER(DeviceInfo)]),
+    "prismGetContextDeviceCount": (Status, [c_void_p, POINTER(c_uint32)]),
+    "prismGetContextDeviceAt": (Status, [c_void_p, c_uint32, POINTER(DeviceInfo)]),
+    "prismGetRenderDeviceShare": (Status, [c_void_p, c_uint32, POINTER(DeviceShare)]),
+    "prismGetRenderWarningCount": (Status, [c_void_p, POINTER(c_uint32)]),
+    "prismGetRenderWarning": (Status, [c_void_p, c_uint32, POINTER(c_char_p)]),
     "prismSetProgressCallback": (Status, [c_void_p, ProgressFn, c_void_p]),
     "prismLoadScene": (Status, [c_char_p, POINTER(c_void_p)]),
     "prismLoadSceneFromString": (Status, [c_char_p, c_char_p, POINTER(c_void_p)]),

@@ -81,7 +81,9 @@ class Render:
 
 class Context:
     """A context on one device: None or "" for the default (the first GPU, else
-    the first device), an index, "cpu", "gpu", or part of the device's name."""
+    the first device), an index, "cpu", "gpu", or part of the device's name; or
+    on several, which share each frame (the same image bit for bit): "all", or a
+    comma-separated list of those ("0,2")."""
 
     def __init__(self, device=None):
         handle = ctypes.c_void_p()
@@ -97,9 +99,22 @@ class Context:
 
     @property
     def device(self):
+        """The (first) device, as a dict like those of prism.devices()."""
         info = _capi.DeviceInfo()
         check(lib.prismGetContextDevice(self._handle, ctypes.byref(info)))
         return _device_dict(info)
+
+    @property
+    def devices(self):
+        """Every device the context shares its frames over, first first."""
+        count = ctypes.c_uint32()
+        check(lib.prismGetContextDeviceCount(self._handle, ctypes.byref(count)))
+        out = []
+        for i in range(count.value):
+            info = _capi.DeviceInfo()
+            check(lib.prismGetContextDeviceAt(self._handle, i, ctypes.byref(info)))
+            out.append(_device_dict(info))
+        return out
 
     def options(self, scene, **overrides):
         """The scene's render options with `overrides` applied and checked."""
@@ -122,7 +137,9 @@ class Context:
         max_depth, min_weight, seed, accel, aa, filter, first_hit, inside_test,
         shadows, bounds, aa_threshold, aa_max_level (the scene's own where not given), check_nan (True: the
         stats' "nan" is None or the first non-finite contribution and its ray). `aovs`: names among depth,
-        normal, primid, albedo. `progress(fraction)` is called as the render goes;
+        normal, primid, albedo. The stats' "devices" say how much of the frame each
+        device traced, "warnings" name a device that failed mid-frame (the others
+        traced its part). `progress(fraction)` is called as the render goes;
         return True from it to cancel (prism.Cancelled is raised)."""
         o = self.options(scene, **options)
         rgba = np.empty((o.height, o.width, 4), dtype=np.float32)
@@ -148,9 +165,32 @@ class Context:
             raise raised[0]
         check(status)
         stats_dict = _stats_dict(stats)
+        stats_dict["devices"] = self._device_shares()
+        stats_dict["warnings"] = self._warnings()
         if o.check_nan:
             stats_dict["nan"] = self._nan_report()
         return Render(rgba, {name: self._aov(name, o) for name in aovs}, stats_dict)
+
+    def _device_shares(self):
+        shares = []
+        for i, device in enumerate(self.devices):
+            share = _capi.DeviceShare()
+            share.struct_size = ctypes.sizeof(share)
+            check(lib.prismGetRenderDeviceShare(self._handle, i, ctypes.byref(share)))
+            shares.append({"device": device["name"], "units": share.units, "samples": share.samples,
+                           "busy_seconds": share.busy_seconds, "failed": bool(share.failed),
+                           "failure": (share.failure or b"").decode()})
+        return shares
+
+    def _warnings(self):
+        count = ctypes.c_uint32()
+        check(lib.prismGetRenderWarningCount(self._handle, ctypes.byref(count)))
+        out = []
+        for i in range(count.value):
+            text = ctypes.c_char_p()
+            check(lib.prismGetRenderWarning(self._handle, i, ctypes.byref(text)))
+            out.append(text.value.decode())
+        return out
 
     def _nan_report(self):
         r = _capi.NanReport()

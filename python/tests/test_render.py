@@ -231,3 +231,33 @@ def test_check_nan_reports_none_on_a_plain_scene(ctx, scenes_dir):
     assert np.isfinite(r.rgba).all()
     assert r.stats["nan"] is None
     assert "nan" not in ctx.render(scene, width=32, height=24).stats
+
+
+_SEVERAL_DEVICES = r"""
+import sys, numpy as np, prism
+scene = prism.Scene.load(sys.argv[1])
+one = prism.Context("0")
+several = prism.Context("all")
+assert len(several.devices) == 3 and len(one.devices) == 1, several.devices
+a = one.render(scene, width=320, height=240, aa="jitter", spp=4, aovs=("depth", "primid"))
+b = several.render(scene, width=320, height=240, aa="jitter", spp=4, aovs=("depth", "primid"))
+assert a.rgba.tobytes() == b.rgba.tobytes()
+assert a.aovs["depth"].tobytes() == b.aovs["depth"].tobytes()
+assert (a.aovs["primid"] == b.aovs["primid"]).all()
+shares = b.stats["devices"]
+assert [s["device"] for s in shares] == [d["name"] for d in several.devices]
+assert sum(s["samples"] for s in shares) == 320 * 240 * 4 and not any(s["failed"] for s in shares)
+assert b.stats["warnings"] == [] and len(a.stats["devices"]) == 1
+print("ok")
+"""
+
+
+def test_a_frame_over_several_devices_is_the_image_of_one(scenes_dir):
+    # Three PoCL devices of one kind, which the OpenCL platform reads at start-up:
+    # so in a process of its own.
+    import subprocess
+    import sys
+    env = dict(os.environ, POCL_DEVICES="pthread pthread pthread")
+    done = subprocess.run([sys.executable, "-c", _SEVERAL_DEVICES, os.path.join(scenes_dir, "whitted.json")],
+                          env=env, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0 and done.stdout.strip() == "ok", done.stdout + done.stderr

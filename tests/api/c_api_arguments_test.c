@@ -51,6 +51,9 @@ int main(int argc, char** argv) {
   PrismRenderOptions opts, small;
   PrismRenderStats stats;
   PrismNanReport nan_report;
+  PrismDeviceShare share;
+  PrismDeviceInfo first_info;
+  uint32_t devices = 0;
   PrismAccel accel;
   PrismAa aa;
   PrismFilter filter;
@@ -91,6 +94,21 @@ int main(int argc, char** argv) {
   CHECK_OK(prismCreateContext(NULL, &context_options, &ctx));
   BAD(prismGetContextDevice(NULL, &info), "prismGetContextDevice");
   BAD(prismGetContextDevice(ctx, NULL), "prismGetContextDevice");
+  BAD(prismGetContextDeviceCount(NULL, &devices), "prismGetContextDeviceCount");
+  BAD(prismGetContextDeviceCount(ctx, NULL), "prismGetContextDeviceCount");
+  CHECK_OK(prismGetContextDeviceCount(ctx, &devices));
+  CHECK(devices == 1); /* one selector, one device */
+  BAD(prismGetContextDeviceAt(NULL, 0, &info), "prismGetContextDeviceAt");
+  BAD(prismGetContextDeviceAt(ctx, 0, NULL), "prismGetContextDeviceAt");
+  BAD(prismGetContextDeviceAt(ctx, 1, &info), "prismGetContextDeviceAt");
+  CHECK_OK(prismGetContextDeviceAt(ctx, 0, &info));
+  CHECK_OK(prismGetContextDevice(ctx, &first_info));
+  CHECK(strcmp(info.name, first_info.name) == 0 && info.index == first_info.index);
+  /* Several devices: no device twice, no empty part, 'all' alone. */
+  EXPECT(prismCreateContext("0,0", NULL, &none_ctx), PRISM_ERROR_DEVICE, "prismCreateContext");
+  EXPECT(prismCreateContext("0,", NULL, &none_ctx), PRISM_ERROR_DEVICE, "prismCreateContext");
+  EXPECT(prismCreateContext("all,0", NULL, &none_ctx), PRISM_ERROR_DEVICE, "prismCreateContext");
+  CHECK(none_ctx == NULL);
   BAD(prismSetProgressCallback(NULL, NULL, NULL), "prismSetProgressCallback");
   prismReleaseContext(NULL);
 
@@ -232,6 +250,11 @@ int main(int argc, char** argv) {
   /* Rendering, in and out of order. */
   EXPECT(prismGetAov(ctx, PRISM_AOV_DEPTH, out, 8 * 6), PRISM_ERROR_INVALID_OPERATION, "prismGetAov");
   EXPECT(prismGetKernelTimeCount(ctx, &u32), PRISM_ERROR_INVALID_OPERATION, "prismGetKernelTimeCount");
+  memset(&share, 0, sizeof share);
+  share.struct_size = sizeof share;
+  EXPECT(prismGetRenderDeviceShare(ctx, 0, &share), PRISM_ERROR_INVALID_OPERATION, "prismGetRenderDeviceShare");
+  EXPECT(prismGetRenderWarningCount(ctx, &u32), PRISM_ERROR_INVALID_OPERATION, "prismGetRenderWarningCount");
+  EXPECT(prismGetRenderWarning(ctx, 0, &text), PRISM_ERROR_INVALID_OPERATION, "prismGetRenderWarning");
   memset(&nan_report, 0, sizeof nan_report);
   nan_report.struct_size = sizeof nan_report;
   EXPECT(prismGetNanReport(ctx, &nan_report), PRISM_ERROR_INVALID_OPERATION, "prismGetNanReport");
@@ -275,6 +298,22 @@ int main(int argc, char** argv) {
   nan_report.found = 7;
   CHECK_OK(prismGetNanReport(ctx, &nan_report));
   CHECK(nan_report.found == 0 && nan_report.primitive == -1); /* a plain scene: every value finite */
+  BAD(prismGetRenderDeviceShare(NULL, 0, &share), "prismGetRenderDeviceShare");
+  BAD(prismGetRenderDeviceShare(ctx, 0, NULL), "prismGetRenderDeviceShare");
+  BAD(prismGetRenderDeviceShare(ctx, 1, &share), "prismGetRenderDeviceShare");
+  share.struct_size = 0;
+  BAD(prismGetRenderDeviceShare(ctx, 0, &share), "prismGetRenderDeviceShare");
+  share.struct_size = sizeof share;
+  CHECK_OK(prismGetRenderDeviceShare(ctx, 0, &share));
+  /* one device traced every sample of the 8x6 render, one per pixel */
+  CHECK(share.units == 1 && share.samples == 8 * 6 && share.failed == 0 && share.failure && share.failure[0] == 0);
+  BAD(prismGetRenderWarningCount(NULL, &u32), "prismGetRenderWarningCount");
+  BAD(prismGetRenderWarningCount(ctx, NULL), "prismGetRenderWarningCount");
+  CHECK_OK(prismGetRenderWarningCount(ctx, &u32));
+  CHECK(u32 == 0);
+  BAD(prismGetRenderWarning(NULL, 0, &text), "prismGetRenderWarning");
+  BAD(prismGetRenderWarning(ctx, 0, NULL), "prismGetRenderWarning");
+  BAD(prismGetRenderWarning(ctx, 0, &text), "prismGetRenderWarning"); /* there is none */
   BAD(prismGetAov(NULL, PRISM_AOV_DEPTH, out, 8 * 6), "prismGetAov");
   BAD(prismGetAov(ctx, PRISM_AOV_DEPTH, NULL, 8 * 6), "prismGetAov");
   BAD(prismGetAov(ctx, PRISM_AOV_NORMAL, out, 8 * 6), "prismGetAov"); /* needs 3 floats a pixel */

@@ -1,0 +1,149 @@
+#include "render/work_dealer.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "device/cl_error.h"
+
+namespace prism {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
+                     const UnitFn& unit, const std::function<bool(std::size_t done, std::size_t units)>& progress) {
+  const std::size_t units = unit_samples.size();
+  DealResult result;
+  result.owner.assign(units, 0);
+  if (devices.empty()) throw std::logic_error("dealUnits: no device");
+
+  if (devices.size() == 1) {
+    DeviceShare& share = devices.front();
+    if (share.failed) throw std::logic_error("dealUnits: the only device has failed");
+    for (std::size_t u = 0; u < units; ++u) {
+      const auto start = std::chrono::steady_clock::now();
+      unit(0, u);
+      share.busy_seconds += secondsSince(start);
+      ++share.units;
+      share.samples += unit_samples[u];
+      if (progress && !progress(u + 1, units)) {
+        result.cancelled = true;
+        break;
+      }
+    }
+    return result;
+  }
+
+  // Shared state: the units not yet taken (in order), how many are finished,
+  // and the first exception that is not a device failure.
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<std::size_t> pending;
+  for (std::size_t u = 0; u < units; ++u) pending.push_back(u);
+  std::size_t finished = 0, working = devices.size(), busy = 0;
+  bool stop = false;
+  std::exception_ptr fatal, last_failure;
+  std::vector<std::vector<std::size_t>> done_by(devices.size());
+
+  auto worker = [&](std::size_t d) {
+    DeviceShare& share = devices[d];
+    while (!share.failed) {
+      std::size_t u;
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        // With nothing left to take, stay while another device is busy: its
+        // unit comes back if that device fails.
+        changed.wait(lock, [&] { return stop || !pending.empty() || busy == 0; });
+        if (stop || pending.empty()) break;
+        u = pending.front();
+        pending.pop_front();
+        ++busy;
+      }
+      const auto start = std::chrono::steady_clock::now();
+      try {
+        unit(d, u);
+      } catch (const DeviceError& e) {
+        std::lock_guard<std::mutex> lock(mutex);
+        --busy;
+        changed.notify_all();
+        share.failed = true;
+        share.failure = e.what();
+        // Its unit and every unit it finished go to the others: a failed
+        // device's memory is not read again.
+        pending.push_front(u);
+        for (std::size_t v : done_by[d]) pending.push_front(v);
+        finished -= done_by[d].size();
+        done_by[d].clear();
+        share.units = 0;
+        share.samples = 0;
+        last_failure = std::current_exception();
+        result.warnings.push_back("device '" + share.device + "' failed mid-frame and was left out; the others " +
+                                  "traced its part of the frame: " + e.what());
+        break;
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        --busy;
+        changed.notify_all();
+        if (!fatal) fatal = std::current_exception();
+        stop = true;
+        break;
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      share.busy_seconds += secondsSince(start);
+      ++share.units;
+      share.samples += unit_samples[u];
+      result.owner[u] = d;
+      done_by[d].push_back(u);
+      ++finished;
+      --busy;
+      changed.notify_all();
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    --working;
+    changed.notify_all();
+  };
+
+  std::vector<std::thread> threads;
+  threads.reserve(devices.size());
+  for (std::size_t d = 0; d < devices.size(); ++d) threads.emplace_back(worker, d);
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    std::size_t reported = 0;
+    while (working > 0) {
+      changed.wait(lock, [&] { return working == 0 || (finished > reported && !stop); });
+      if (finished > reported && !stop) {
+        reported = finished;
+        if (progress) {
+          const std::size_t done = finished;
+          lock.unlock();
+          const bool go_on = progress(done, units);
+          lock.lock();
+          if (!go_on) {
+            stop = true;
+            result.cancelled = true;
+            changed.notify_all();
+          }
+        }
+      }
+    }
+  }
+  for (std::thread& t : threads) t.join();
+  if (fatal) std::rethrow_exception(fatal);
+  if (result.cancelled) return result;
+  if (finished < units) {  // every device failed
+    if (last_failure) std::rethrow_exception(last_failure);
+    throw DeviceError("every device has failed");
+  }
+  return result;
+}
+
+}  // namespace prism

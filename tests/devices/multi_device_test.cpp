@@ -1,0 +1,214 @@
+// One frame over several devices (issue 13): the image, every AOV and the ray
+// counts are the same bit for bit as on one device, whatever the number and
+// order of the devices; a device that fails mid-frame (an injected fault) is
+// left out with a warning and the others trace its part; every device failing
+// is an error; and the selector that names several devices. This binary runs
+// with POCL_DEVICES="pthread pthread pthread", set below before OpenCL starts:
+// three PoCL devices of one kind on the same cores.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "device/cl_error.h"
+#include "device/context.h"
+#include "device/device_list.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+using namespace prism;
+
+namespace {
+
+// Static initialisation comes before main, so before the OpenCL ICD loader
+// reads PoCL's settings at the first platform query.
+const bool kThreePoclDevices = setenv("POCL_DEVICES", "pthread pthread pthread", /*overwrite=*/1) == 0;
+
+// The PoCL devices, each with its own context, made once for the binary.
+std::vector<Context*> poclDevices() {
+  static std::vector<std::unique_ptr<Context>> contexts;
+  static bool made = false;
+  if (!made) {
+    made = true;
+    for (const DeviceDescription& d : listDevices())
+      if (d.platform_name.find("Portable Computing Language") != std::string::npos)
+        contexts.push_back(std::make_unique<Context>(d, true));
+  }
+  std::vector<Context*> out;
+  for (auto& c : contexts) out.push_back(c.get());
+  return out;
+}
+
+std::vector<Context*> pick(const std::vector<Context*>& all, std::initializer_list<size_t> which) {
+  std::vector<Context*> out;
+  for (size_t i : which) out.push_back(all.at(i));
+  return out;
+}
+
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+void requireSameFrame(const RenderResult& a, const RenderResult& b) {
+  CHECK(sameBits(a.rgba, b.rgba));
+  CHECK(sameBits(a.depth, b.depth));
+  CHECK(sameBits(a.normal, b.normal));
+  CHECK(sameBits(a.primid, b.primid));
+  CHECK(sameBits(a.albedo, b.albedo));
+  CHECK(a.stats.rays_by_kind == b.stats.rays_by_kind);
+  CHECK(a.stats.rays_per_depth == b.stats.rays_per_depth);
+}
+
+struct Case {
+  const char* name;
+  const char* scene;
+  int width, height;
+  AaMode aa;
+  int spp;
+  FirstHitMode first_hit;
+};
+
+// Scenes and modes whose sample sequences span several units (a unit is a
+// slice of 65536 samples; the Z-buffer's is its batch, 64 slices, so that case
+// is one unit on one device while the others write no AOV pixel).
+const Case kCases[] = {
+    {"whitted, jitter 4 spp (5 units)", "whitted.json", 320, 240, AaMode::Jitter, 4, FirstHitMode::Trace},
+    {"penumbra: area lights' feelers (2 units)", "penumbra.json", 200, 150, AaMode::Grid, 4, FirstHitMode::Trace},
+    {"depth of field, 3 spp (4 units)", "dof.json", 256, 192, AaMode::Random, 3, FirstHitMode::Trace},
+    {"adaptive (several passes)", "whitted.json", 320, 240, AaMode::Adaptive, 1, FirstHitMode::Trace},
+    {"teapot through the Z-buffer", "teapot.json", 160, 120, AaMode::Jitter, 2, FirstHitMode::ZBuffer},
+};
+
+RenderOptions optionsFor(const Scene& scene, const Case& c) {
+  RenderOptions o = RenderOptions::fromScene(scene);
+  o.width = c.width;
+  o.height = c.height;
+  o.aa = c.aa;
+  o.spp = c.spp;
+  o.first_hit = c.first_hit;
+  return o;
+}
+
+std::uint64_t sharedSamples(const RenderStats& s) {
+  std::uint64_t n = 0;
+  for (const DeviceShare& d : s.devices) n += d.failed ? 0 : d.samples;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("the test runs with three PoCL devices of one kind") {
+  // POCL_DEVICES is set for this binary; fewer devices mean the set-up broke.
+  REQUIRE(kThreePoclDevices);
+  REQUIRE(poclDevices().size() >= 3);
+}
+
+TEST_CASE("one frame over several devices is the same as on one, bit for bit, in any order") {
+  const std::vector<Context*> all = poclDevices();
+  REQUIRE(all.size() >= 3);
+  Renderer one(*all[0]);
+  Renderer three(pick(all, {0, 1, 2}));
+  Renderer two_reversed(pick(all, {2, 0}));
+  for (const Case& c : kCases) {
+    SECTION(c.name) {
+      const Scene scene = loadSceneFile(std::string(PRISM_SOURCE_DIR "/scenes/") + c.scene);
+      const RenderOptions o = optionsFor(scene, c);
+      const RenderResult a = one.render(scene, o);
+      const RenderResult b = three.render(scene, o);
+      const RenderResult d = two_reversed.render(scene, o);
+      requireSameFrame(a, b);
+      requireSameFrame(a, d);
+      REQUIRE(b.stats.devices.size() == 3);
+      CHECK(b.stats.warnings.empty());
+      // Every unit was traced once: the devices' samples add up to the frame's.
+      if (c.aa != AaMode::Adaptive) {
+        CHECK(sharedSamples(b.stats) == a.stats.rays_by_kind[0]);
+        CHECK(sharedSamples(d.stats) == a.stats.rays_by_kind[0]);
+      } else {
+        CHECK(sharedSamples(b.stats) == a.stats.rays_by_kind[0]);
+      }
+    }
+  }
+}
+
+TEST_CASE("a device that fails mid-frame is left out with a warning and the others trace its part") {
+  const std::vector<Context*> all = poclDevices();
+  REQUIRE(all.size() >= 2);
+  const Case& c = kCases[0];
+  const Scene scene = loadSceneFile(std::string(PRISM_SOURCE_DIR "/scenes/") + c.scene);
+  const RenderOptions o = optionsFor(scene, c);
+  Renderer one(*all[0]);
+  const RenderResult reference = one.render(scene, o);
+
+  Renderer two(pick(all, {0, 1}));
+  SECTION("the second device fails on its first unit") {
+    two.injectDeviceFault(1, 0);
+    const RenderResult r = two.render(scene, o);
+    requireSameFrame(reference, r);
+    REQUIRE(r.stats.devices.size() == 2);
+    CHECK(r.stats.devices[1].failed);
+    CHECK(r.stats.devices[1].failure.find("injected fault") != std::string::npos);
+    CHECK(r.stats.devices[0].samples == reference.stats.rays_by_kind[0]);
+    REQUIRE(r.stats.warnings.size() == 1);
+    CHECK(r.stats.warnings[0].find(all[1]->device().name) != std::string::npos);
+  }
+  SECTION("the first device, which would resolve the frame, fails on its first unit") {
+    two.injectDeviceFault(0, 0);
+    const RenderResult r = two.render(scene, o);
+    requireSameFrame(reference, r);
+    CHECK(r.stats.devices[0].failed);
+    CHECK(r.stats.devices[1].samples == reference.stats.rays_by_kind[0]);
+    CHECK(r.stats.warnings.size() == 1);
+  }
+  SECTION("a device fails after finishing units: they are traced again by the other") {
+    two.injectDeviceFault(0, 1);
+    const RenderResult r = two.render(scene, o);
+    requireSameFrame(reference, r);
+    // Whether device 0 reached a second unit depends on the dealing; when it
+    // did, none of its units count and device 1 traced the whole frame.
+    if (r.stats.devices[0].failed) {
+      CHECK(r.stats.devices[0].units == 0);
+      CHECK(r.stats.devices[1].samples == reference.stats.rays_by_kind[0]);
+    } else {
+      CHECK(sharedSamples(r.stats) == reference.stats.rays_by_kind[0]);
+    }
+  }
+  SECTION("adaptive sampling: the failed device's part of every pass goes to the other") {
+    const RenderOptions adaptive = optionsFor(scene, kCases[3]);
+    const RenderResult ref = one.render(scene, adaptive);
+    two.injectDeviceFault(1, 0);
+    const RenderResult r = two.render(scene, adaptive);
+    requireSameFrame(ref, r);
+    CHECK(r.stats.devices[1].failed);
+  }
+  SECTION("every device failing is an error") {
+    two.injectDeviceFault(0, 0);
+    two.injectDeviceFault(1, 0);
+    CHECK_THROWS_AS(two.render(scene, o), DeviceError);
+  }
+  SECTION("one device alone: its failure is the render's") {
+    one.injectDeviceFault(0, 2);
+    CHECK_THROWS_WITH(one.render(scene, o), Catch::Contains("injected fault"));
+  }
+}
+
+TEST_CASE("several devices are named by 'all' or by a list of selectors") {
+  const std::vector<DeviceDescription> every = listDevices();
+  REQUIRE(every.size() >= 2);
+  const std::vector<DeviceDescription> all = selectDevices("all");
+  REQUIRE(all.size() == every.size());
+  for (size_t i = 0; i < all.size(); ++i) CHECK(all[i].index == i);
+  const std::vector<DeviceDescription> list = selectDevices("1,0");
+  REQUIRE(list.size() == 2);
+  CHECK(list[0].index == 1);
+  CHECK(list[1].index == 0);
+  CHECK(selectDevices("0").size() == 1);
+  CHECK_THROWS_WITH(selectDevices("0,0"), Catch::Contains("named twice"));
+  CHECK_THROWS_WITH(selectDevices("0,"), Catch::Contains("each comma-separated part"));
+  CHECK_THROWS_WITH(selectDevices("all,1"), Catch::Contains("'all' stands alone"));
+  CHECK_THROWS_WITH(selectDevices("0,999"), Catch::Contains("no device with that index"));
+}
