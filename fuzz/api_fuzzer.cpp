@@ -238,6 +238,9 @@ void step(Reader& in, PrismScene (&scenes)[3]) {
     case 10: {
       std::uint32_t count = 0;
       checked(prismGetSceneObjectCount(scene, &count), "prismGetSceneObjectCount");
+      const char* device = nullptr;
+      if (checked(prismGetSceneDevice(scene, &device), "prismGetSceneDevice") == PRISM_OK && !device)
+        broken("no selector string (even an empty one) for a scene", "prismGetSceneDevice");
       if (checked(prismGetSceneWarningCount(scene, &count), "prismGetSceneWarningCount") == PRISM_OK) {
         const char* message = nullptr;
         const std::uint32_t index = in.byte() % 2 ? count : in.u32() % (count + 2);

@@ -130,6 +130,10 @@ PRISM_API PrismStatus prismLoadScene(const char* path, PrismScene* out_scene);
 /* Parses a scene from JSON text; `name` stands for the file in error messages. */
 PRISM_API PrismStatus prismLoadSceneFromString(const char* json, const char* name, PrismScene* out_scene);
 PRISM_API void prismReleaseScene(PrismScene scene); /* NULL is a no-op */
+/* The devices the scene asks to render on (render.device: a selector as
+ * prismCreateContext takes, "" when it names none); owned by the scene. A
+ * caller that lets the scene choose passes it to prismCreateContext. */
+PRISM_API PrismStatus prismGetSceneDevice(PrismScene scene, const char** selector);
 /* Warnings found while loading (unknown keys and the like), one per index. */
 PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* count);
 PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, const char** message);

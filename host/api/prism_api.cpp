@@ -289,6 +289,12 @@ PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* coun
   return PRISM_OK;
 }
 
+PRISM_API PrismStatus prismGetSceneDevice(PrismScene scene, const char** selector) {
+  PRISM_REQUIRE(scene && selector, "prismGetSceneDevice: NULL argument");
+  *selector = scene->scene.render.device.c_str();
+  return PRISM_OK;
+}
+
 PRISM_API PrismStatus prismGetSceneObjectCount(PrismScene scene, uint32_t* count) {
   PRISM_REQUIRE(scene && count, "prismGetSceneObjectCount: NULL argument");
   *count = static_cast<uint32_t>(scene->scene.objects.size());

@@ -363,7 +363,12 @@ int runRender(const std::vector<std::string>& args) {
   prismDefaultContextOptions(&context_options);
   context_options.use_kernel_cache = request.use_kernel_cache ? 1 : 0;
   PrismContext raw_context = nullptr;
-  const char* selector = request.device.empty() ? nullptr : request.device.c_str();
+  // --device, else the scene's render.device, else the default.
+  const char* scene_device = nullptr;
+  if (prismGetSceneDevice(scene.get(), &scene_device) != PRISM_OK) return failWithLastError();
+  const char* selector = !request.device.empty() ? request.device.c_str()
+                         : scene_device && *scene_device ? scene_device
+                                                         : nullptr;
   if (prismCreateContext(selector, &context_options, &raw_context) != PRISM_OK) return failWithLastError();
   const ContextHandle context(raw_context);
   const std::string devices = devicesText(context.get());

@@ -1,4 +1,5 @@
 #include "device/device_list.h"
+#include "device/device_selector.h"
 
 #include <algorithm>
 #include <cctype>
@@ -128,23 +129,20 @@ std::vector<DeviceDescription> selectDevices(const std::string& selector) {
           "no OpenCL device found: install an OpenCL driver (on Debian: apt-get install pocl-opencl-icd)");
     return devices;
   }
-  if (selector.find(',') == std::string::npos) return {selectDevice(selector)};
+  std::vector<std::string> parts;
+  try {
+    parts = deviceSelectorParts(selector);
+  } catch (const std::invalid_argument& e) {
+    throw DeviceError(e.what());
+  }
   std::vector<DeviceDescription> chosen;
-  size_t begin = 0;
-  for (;;) {
-    const size_t end = selector.find(',', begin);
-    const std::string part = selector.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-    if (part.empty() || lower(part) == "all")
-      throw DeviceError("devices '" + selector + "': each comma-separated part names one device (an index, cpu, gpu " +
-                        "or part of a name); 'all' stands alone");
+  for (const std::string& part : parts) {
     DeviceDescription d = selectDevice(part);
     for (const DeviceDescription& c : chosen)
       if (c.index == d.index)
         throw DeviceError("devices '" + selector + "': device " + std::to_string(d.index) + " (" + d.name +
                           ") is named twice");
     chosen.push_back(std::move(d));
-    if (end == std::string::npos) break;
-    begin = end + 1;
   }
   return chosen;
 }

@@ -60,6 +60,9 @@ struct RenderSettings {
   std::string inside_test = "crossing";  // polygons that name none: crossing, radial or left-right
   std::string shadows = "auto";  // point lights' feelers: auto, accel or lightbuffer
   std::string bounds = "aabb";   // the BVH children's bounds: aabb or kdop
+  // The devices to render on when the caller names none (--device): a selector
+  // of device/device_selector.h ("all", "0,2", "gpu"); "" for the default.
+  std::string device;
 };
 
 enum class LightType { Point = 0, Quad = 1, Disk = 2, Sphere = 3 };

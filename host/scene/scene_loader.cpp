@@ -12,6 +12,7 @@
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 
+#include "device/device_selector.h"
 #include "mesh/mesh_cache.h"
 #include "mesh/mesh_error.h"
 #include "scene/sampling_options.h"
@@ -186,7 +187,7 @@ class SceneParser : private JsonReader {
   void parseRender(const Json& v, const std::string& path) {
     checkObject(v, path,
                 {"max_depth", "min_weight", "ambient", "background", "seed", "accel", "first_hit", "inside_test",
-                 "shadows", "bounds"});
+                 "shadows", "bounds", "device"});
     RenderSettings& r = m_scene.render;
     if (const Json* p = find(v, "max_depth"))
       r.max_depth = int(integer(*p, member(path, "max_depth"), 0, kMaxDepth));
@@ -230,6 +231,16 @@ class SceneParser : private JsonReader {
       if (!tryParseBoundsKind(name, &kind))
         fail(member(path, "bounds"), "unknown bounds '" + name + "' (expected " + kBoundsKindNames + ")");
       r.bounds = name;
+    }
+    if (const Json* p = find(v, "device")) {
+      const std::string selector =
+          string(*p, member(path, "device"), "a string (an index, cpu, gpu, part of a name, all, or a list such as 0,2)");
+      try {
+        deviceSelectorParts(selector);
+      } catch (const std::invalid_argument& e) {
+        fail(member(path, "device"), e.what());
+      }
+      r.device = selector;
     }
   }
 

@@ -121,6 +121,10 @@ int main(int argc, char** argv) {
   BAD(prismLoadMeshAsScene(NULL, &scene), "prismLoadMeshAsScene");
   BAD(prismLoadMeshAsScene(path, NULL), "prismLoadMeshAsScene");
   CHECK_OK(prismLoadScene(path, &scene));
+  BAD(prismGetSceneDevice(NULL, &text), "prismGetSceneDevice");
+  BAD(prismGetSceneDevice(scene, NULL), "prismGetSceneDevice");
+  CHECK_OK(prismGetSceneDevice(scene, &text));
+  CHECK(text && text[0] == 0); /* the example scene names no device */
   BAD(prismGetSceneWarningCount(NULL, &count), "prismGetSceneWarningCount");
   BAD(prismGetSceneWarningCount(scene, NULL), "prismGetSceneWarningCount");
   CHECK_OK(prismGetSceneWarningCount(scene, &count));

@@ -57,3 +57,25 @@ run_prism(render "${scene}" -o "${WORK_DIR}/twice.pfm" --width 8 --height 6 --de
 if(rc EQUAL 0 OR NOT err MATCHES "named twice")
   message(FATAL_ERROR "a device named twice must be refused (exit ${rc}):\n${out}${err}")
 endif()
+
+# A scene that names its devices (render.device) renders on them unless --device says otherwise.
+file(WRITE "${WORK_DIR}/scene_devices.json" [=[{
+  "camera": {"position": [0, 1, 5], "look_at": [0, 0, 0], "fov": 40},
+  "render": {"device": "all"},
+  "lights": [{"position": [3, 6, 4]}],
+  "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1},
+              {"type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0]}]
+}]=])
+run_prism(render "${WORK_DIR}/scene_devices.json" -o "${WORK_DIR}/scene_all.pfm" --width 320 --height 240)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "spp on 3 devices ")
+  message(FATAL_ERROR "render.device all must render on the three devices (exit ${rc}):\n${out}${err}")
+endif()
+run_prism(render "${WORK_DIR}/scene_devices.json" -o "${WORK_DIR}/scene_one.pfm" --width 320 --height 240 --device 1)
+if(NOT rc EQUAL 0 OR out MATCHES "devices \\(")
+  message(FATAL_ERROR "--device 1 must override render.device (exit ${rc}):\n${out}${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/scene_all.pfm" "${WORK_DIR}/scene_one.pfm"
+  RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "the scene rendered on three devices differs from one device's image")
+endif()

@@ -212,3 +212,16 @@ TEST_CASE("several devices are named by 'all' or by a list of selectors") {
   CHECK_THROWS_WITH(selectDevices("all,1"), Catch::Contains("'all' stands alone"));
   CHECK_THROWS_WITH(selectDevices("0,999"), Catch::Contains("no device with that index"));
 }
+
+TEST_CASE("a scene names its devices in render.device, checked for its form when it loads") {
+  auto load = [](const std::string& device_json) {
+    return parseScene(R"({"render": {"device": )" + device_json + "}}", "devices.json");
+  };
+  CHECK(load(R"("all")").render.device == "all");
+  CHECK(load(R"("0,2")").render.device == "0,2");
+  CHECK(load(R"("gpu")").render.device == "gpu");
+  CHECK(parseScene("{}", "none.json").render.device.empty());
+  CHECK_THROWS_WITH(load(R"("0,,1")"), Catch::Contains("render.device: devices '0,,1': each comma-separated part"));
+  CHECK_THROWS_WITH(load(R"("all,0")"), Catch::Contains("'all' stands alone"));
+  CHECK_THROWS_WITH(load("3"), Catch::Contains("render.device") && Catch::Contains("expected a string"));
+}
