@@ -124,17 +124,7 @@ KernelLaunch& KernelLaunch::raw(size_t size, const void* value) {
 
 void KernelLaunch::run(size_t count) {
   if (count == 0) return;
-  size_t kernel_max = 0;
-  PRISM_CL_CHECK(clGetKernelWorkGroupInfo(m_kernel, m_context.device().device, CL_KERNEL_WORK_GROUP_SIZE,
-                                          sizeof(kernel_max), &kernel_max, nullptr));
-  size_t multiple = 1;
-  clGetKernelWorkGroupInfo(m_kernel, m_context.device().device, CL_KERNEL_PREFERRED_WORK_GROUP_SIZE_MULTIPLE,
-                           sizeof(multiple), &multiple, nullptr);
-  // 64 work-items suit both CPU (PoCL is insensitive, PERF-NOTES) and GPUs, as
-  // long as the device and kernel allow it.
-  size_t local = std::min<size_t>({64, kernel_max, m_context.device().max_work_group_size});
-  if (multiple > 1 && multiple <= local) local -= local % multiple;
-  local = std::max<size_t>(local, 1);
+  const size_t local = m_context.localSize(m_kernel);
   size_t global = (count + local - 1) / local * local;
   KernelProfile& profile = m_context.profile();
   const bool first = m_context.firstLaunch(m_kernel);
@@ -184,6 +174,28 @@ Context::~Context() {
 }
 
 void Context::finish() { PRISM_CL_CHECK(clFinish(m_queue)); }
+
+size_t Context::localSize(cl_kernel kernel) {
+  {
+    std::lock_guard<std::mutex> lock(m_launch_mutex);
+    auto known = m_local_sizes.find(kernel);
+    if (known != m_local_sizes.end()) return known->second;
+  }
+  size_t kernel_max = 0;
+  PRISM_CL_CHECK(clGetKernelWorkGroupInfo(kernel, m_device.device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max),
+                                          &kernel_max, nullptr));
+  size_t multiple = 1;
+  clGetKernelWorkGroupInfo(kernel, m_device.device, CL_KERNEL_PREFERRED_WORK_GROUP_SIZE_MULTIPLE, sizeof(multiple),
+                           &multiple, nullptr);
+  // 64 work-items suit both CPU (PoCL is insensitive, PERF-NOTES) and GPUs, as
+  // long as the device and kernel allow it.
+  size_t local = std::min<size_t>({64, kernel_max, m_device.max_work_group_size});
+  if (multiple > 1 && multiple <= local) local -= local % multiple;
+  local = std::max<size_t>(local, 1);
+  std::lock_guard<std::mutex> lock(m_launch_mutex);
+  m_local_sizes[kernel] = local;
+  return local;
+}
 
 bool Context::firstLaunch(cl_kernel kernel) {
   std::lock_guard<std::mutex> lock(m_launch_mutex);

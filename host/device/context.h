@@ -119,6 +119,10 @@ class Context {
   cl_kernel kernelFromText(const std::string& text, const std::string& program_name, const std::string& kernel_name,
                            const std::string& options = "");
   KernelLaunch launch(cl_kernel kernel) { return KernelLaunch(*this, kernel); }
+  // KernelLaunch::run: the work-group size of a kernel's launches (64, or
+  // less where the kernel or device allows less; a multiple of the preferred
+  // one where it can be), asked of the driver once per kernel.
+  size_t localSize(cl_kernel kernel);
   // KernelLaunch::run: whether this is the kernel's first launch (then it
   // keeps the launch's event for takeFirstLaunchSeconds).
   bool firstLaunch(cl_kernel kernel);
@@ -153,8 +157,9 @@ class Context {
   std::mutex m_mutex;
   double m_build_seconds = 0;
   std::set<cl_kernel> m_launched;         // kernels launched at least once
+  std::map<cl_kernel, size_t> m_local_sizes;  // their work-group sizes
   std::vector<cl_event> m_first_launches; // their first launches' events, until taken
-  std::mutex m_launch_mutex;              // guards the two above
+  std::mutex m_launch_mutex;              // guards the three above
   KernelProfile m_profile;
 };
 
