@@ -77,7 +77,8 @@ int runDevices(const std::vector<std::string>& args) {
     }
   }
   for (uint32_t i = 0; i < count; ++i) printDevice(devices[i], i == default_index);
-  std::printf("\nChoose one with 'prism render --device N' (or cpu, gpu, or part of its name).\n");
+  std::printf("\nChoose one with 'prism render --device N' (or cpu, gpu, or part of its name);\n"
+              "share each frame over several with --device all or a list such as --device 0,2.\n");
   return kExitOk;
 }
 

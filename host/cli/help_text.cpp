@@ -202,7 +202,8 @@ const char* const kDevicesHelp =
 Lists the OpenCL devices prism can render on, one block per device: the index that
 'prism render --device N' takes, the name, type, vendor, platform, compute units,
 global memory, OpenCL C version and driver. The device used when --device is not
-given (the first GPU, else the first device) is marked "default".
+given (the first GPU, else the first device) is marked "default". 'prism render
+--device all' (or a list such as 0,2) shares each frame over several devices.
 
 No devices? prism needs an OpenCL runtime. PoCL runs on any CPU; on Debian or Ubuntu:
   sudo apt-get install pocl-opencl-icd
