@@ -107,18 +107,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   else
     renderSamples(sampling, options, result, progress);
 
-  // The devices' counts (those of a device that failed were traced again by
-  // the others, so they are left out).
   RenderStats& stats = result.stats;
-  for (size_t i = 0; i < k; ++i) {
-    if (stats.devices[i].failed) continue;
-    const RenderStats& d = m_device_stats[i];
-    for (size_t j = 0; j < stats.rays_by_kind.size(); ++j) stats.rays_by_kind[j] += d.rays_by_kind[j];
-    for (size_t j = 0; j < stats.rays_per_depth.size(); ++j) stats.rays_per_depth[j] += d.rays_per_depth[j];
-    stats.waves = std::max(stats.waves, d.waves);
-    stats.film_batches += d.film_batches;
-    if (d.nan && (!stats.nan || d.nan->sample < stats.nan->sample)) stats.nan = d.nan;
-  }
   const size_t pixels = static_cast<size_t>(options.width) * options.height;
   stats.rays_per_pixel = static_cast<double>(stats.rays_by_kind[RAY_KIND_PRIMARY]) / static_cast<double>(pixels);
   // AOVs: each pixel from the device whose sample wrote it.
@@ -168,12 +157,18 @@ std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_sample
                                    const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
                                    const ProgressFn& progress) {
   std::vector<std::uint64_t> started(m_tracers.size(), 0);
+  // Counts are kept per unit, so that a unit traced again after its device
+  // failed counts once, whoever traced it.
+  std::vector<RenderStats> counts(unit_samples.size());
   const UnitFn traced = [&](size_t d, size_t u) {
     for (const auto& [device, at] : m_faults)
       if (d == device && started[d] == at)
         throw DeviceError("injected fault (Renderer::injectDeviceFault) at its unit " + std::to_string(at));
     ++started[d];
+    RenderStats& tracer_counts = m_device_stats[d];  // where the tracer counts (DeviceTracer::load)
+    tracer_counts = RenderStats{};
     unit(*m_tracers[d], u);
+    counts[u] = std::move(tracer_counts);
   };
   // With one device, progress comes chunk by chunk from the unit itself.
   std::function<bool(size_t, size_t)> step;
@@ -182,6 +177,16 @@ std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_sample
   DealResult dealt = dealUnits(result.stats.devices, unit_samples, traced, step);
   for (std::string& w : dealt.warnings) result.stats.warnings.push_back(std::move(w));
   if (dealt.cancelled) throw RenderCancelled();
+  // In unit order: the first non-finite contribution is the first unit's that
+  // found one (render order, as on one device).
+  RenderStats& stats = result.stats;
+  for (const RenderStats& c : counts) {
+    for (size_t j = 0; j < stats.rays_by_kind.size(); ++j) stats.rays_by_kind[j] += c.rays_by_kind[j];
+    for (size_t j = 0; j < stats.rays_per_depth.size(); ++j) stats.rays_per_depth[j] += c.rays_per_depth[j];
+    stats.waves = std::max(stats.waves, c.waves);
+    stats.film_batches += c.film_batches;
+    if (c.nan && !stats.nan) stats.nan = c.nan;
+  }
   return dealt.owner;
 }
 

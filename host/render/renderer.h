@@ -92,7 +92,8 @@ class Renderer {
   void renderAdaptive(const SamplingOptions& sampling, const RenderOptions& options, RenderResult& result,
                       const ProgressFn& progress);
   // Runs unit(tracer, u) for every unit over the devices; fills
-  // result.stats.devices and its warnings; returns which tracer did each unit.
+  // result.stats.devices and its warnings, adds the units' counts to
+  // result.stats; returns which tracer did each unit.
   std::vector<size_t> deal(const std::vector<std::uint64_t>& unit_samples,
                            const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
                            const ProgressFn& progress);
@@ -101,7 +102,7 @@ class Renderer {
 
   std::vector<Context*> m_contexts;
   std::vector<std::unique_ptr<DeviceTracer>> m_tracers;
-  std::vector<RenderStats> m_device_stats;  // each tracer's counts this frame
+  std::vector<RenderStats> m_device_stats;  // where each tracer counts its current unit
   AccelBuildOptions m_accel_build;
   std::vector<std::pair<size_t, std::uint64_t>> m_faults;  // (device, unit)
 };

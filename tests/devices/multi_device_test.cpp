@@ -185,6 +185,15 @@ TEST_CASE("a device that fails mid-frame is left out with a warning and the othe
     requireSameFrame(ref, r);
     CHECK(r.stats.devices[1].failed);
   }
+  SECTION("adaptive sampling: a device that fails in a later pass keeps the counts of the passes it finished") {
+    // Unit numbers count within a pass: the fault comes at the device's second
+    // unit of a pass, after its units of earlier passes went back to the host.
+    const RenderOptions adaptive = optionsFor(scene, kCases[3]);
+    const RenderResult ref = one.render(scene, adaptive);
+    two.injectDeviceFault(1, 1);
+    const RenderResult r = two.render(scene, adaptive);
+    requireSameFrame(ref, r);  // ray counts included
+  }
   SECTION("every device failing is an error") {
     two.injectDeviceFault(0, 0);
     two.injectDeviceFault(1, 0);
