@@ -123,6 +123,32 @@ PRISM_API PrismStatus prismGetContextDeviceAt(PrismContext context, uint32_t pos
 typedef int (*PrismProgressFn)(void* user, double fraction_done);
 PRISM_API PrismStatus prismSetProgressCallback(PrismContext context, PrismProgressFn fn, void* user);
 
+/* Several processes (MPI ranks, say) can share each frame. Each creates a
+ * context on its own devices, gives it the same `parts` and its own `part`, and
+ * calls prismRender with the same scene and options; each traces a contiguous
+ * stretch of the frame's units, and part 0's prismRender returns the whole
+ * image, AOVs and counts, bit for bit those of one process (the other parts'
+ * image and AOVs hold zeros). The transport is the caller's: prismRender calls
+ * `exchange` on every part in the same order, with this part's bytes; when
+ * `to_all` is nonzero every part must receive every part's bytes, otherwise
+ * part 0 alone does; `receive(receiver, part, data, size)` is called once for
+ * each part whose bytes arrive here (this part's own included). It returns 0,
+ * or nonzero when the transport failed (prismRender then fails with
+ * PRISM_ERROR_UNKNOWN, and the other parts wait: end them, as MPI_Abort does).
+ * The parts run one build of prism on machines of one byte order. A NULL
+ * `parts` makes the context render alone again. */
+typedef void (*PrismReceiveFn)(void* receiver, uint32_t part, const void* data, uint64_t size);
+typedef int (*PrismExchangeFn)(void* user, int to_all, const void* data, uint64_t size, PrismReceiveFn receive,
+                               void* receiver);
+typedef struct PrismFrameParts {
+  size_t struct_size;       /* sizeof(PrismFrameParts) */
+  uint32_t part;            /* this process, below parts; 0 gets the image */
+  uint32_t parts;           /* processes sharing each frame (1: alone) */
+  PrismExchangeFn exchange; /* needed when parts > 1 */
+  void* user;               /* passed to exchange */
+} PrismFrameParts;
+PRISM_API PrismStatus prismSetFrameParts(PrismContext context, const PrismFrameParts* parts);
+
 /* ---- scenes -------------------------------------------------------------------- */
 
 /* Loads a JSON scene file (docs/scene-format.md). */
@@ -500,7 +526,11 @@ typedef struct PrismDeviceShare {
   double busy_seconds;    /* wall time it spent on them */
   uint32_t failed;
   const char* failure;
+  const char* device;     /* its name; with frame parts, "part p: name" */
 } PrismDeviceShare;
+/* How many devices took part: the context's, and at part 0 of a frame shared
+ * by processes (prismSetFrameParts) every part's, part by part. */
+PRISM_API PrismStatus prismGetRenderDeviceShareCount(PrismContext context, uint32_t* count);
 PRISM_API PrismStatus prismGetRenderDeviceShare(PrismContext context, uint32_t position, PrismDeviceShare* share);
 /* After a render: its warnings (a device that failed mid-frame), one per index;
  * owned by the context, valid until its next render. */

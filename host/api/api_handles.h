@@ -21,6 +21,7 @@ struct PrismContextImpl {
   bool last_check_nan = false;  // the last render watched for NaN (prismGetNanReport)
   PrismProgressFn progress = nullptr;
   void* progress_user = nullptr;
+  prism::FrameParts parts;  // prismSetFrameParts: the processes sharing each frame
   // The ray-query engine of the last prismIntersect / prismOccluded, reused while
   // the scene (and its revision) and the structure stay the same.
   std::unique_ptr<prism::RayQueryEngine> queries;

@@ -122,6 +122,7 @@ RenderResult renderScene(PrismContext context, PrismScene scene, const PrismRend
     for (auto& c : context->more) devices.push_back(c.get());
     context->renderer = std::make_unique<Renderer>(devices);
   }
+  context->renderer->setFrameParts(context->parts);
   ProgressFn progress;
   if (context->progress) progress = [context](double f) { return context->progress(context->progress_user, f) == 0; };
   return context->renderer->render(scene->scene, opts, progress);  // FilmTooLarge: guarded() says OUT_OF_MEMORY
@@ -264,6 +265,41 @@ PRISM_API PrismStatus prismSetProgressCallback(PrismContext context, PrismProgre
   PRISM_REQUIRE(context, "prismSetProgressCallback: context is NULL");
   context->progress = fn;
   context->progress_user = user;
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismSetFrameParts(PrismContext context, const PrismFrameParts* parts) {
+  PRISM_REQUIRE(context, "prismSetFrameParts: context is NULL");
+  if (!parts) {
+    context->parts = FrameParts{};
+    return PRISM_OK;
+  }
+  PRISM_REQUIRE(parts->struct_size >= sizeof(PrismFrameParts),
+                "prismSetFrameParts: parts->struct_size is too small (set it to sizeof(PrismFrameParts))");
+  PRISM_REQUIRE(parts->parts >= 1 && parts->part < parts->parts,
+                "prismSetFrameParts: part " + std::to_string(parts->part) + " is not below parts " +
+                    std::to_string(parts->parts) + " (parts counts the processes, at least 1)");
+  PRISM_REQUIRE(parts->parts == 1 || parts->exchange, "prismSetFrameParts: exchange is NULL and parts > 1");
+  FrameParts f;
+  f.part = parts->part;
+  f.parts = parts->parts;
+  if (f.shared()) {
+    const PrismFrameParts c = *parts;
+    f.exchange = [c](bool to_all, const Bytes& mine) {
+      std::vector<Bytes> got(c.parts);
+      const PrismReceiveFn receive = [](void* receiver, uint32_t part, const void* data, uint64_t size) {
+        auto& into = *static_cast<std::vector<Bytes>*>(receiver);
+        const auto* bytes = static_cast<const std::uint8_t*>(data);
+        if (part < into.size() && (bytes || size == 0)) into[part].assign(bytes, bytes + size);
+      };
+      const int rc = c.exchange(c.user, to_all ? 1 : 0, mine.data(), mine.size(), receive, &got);
+      if (rc != 0)
+        throw std::runtime_error("the frame parts' exchange failed (PrismFrameParts.exchange returned " +
+                                 std::to_string(rc) + ")");
+      return got;
+    };
+  }
+  context->parts = std::move(f);
   return PRISM_OK;
 }
 
@@ -416,6 +452,13 @@ PRISM_API PrismStatus prismGetKernelTime(PrismContext context, uint32_t index, c
   return PRISM_OK;
 }
 
+PRISM_API PrismStatus prismGetRenderDeviceShareCount(PrismContext context, uint32_t* count) {
+  PRISM_REQUIRE(context && count, "prismGetRenderDeviceShareCount: NULL argument");
+  if (!context->has_render) return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetRenderDeviceShareCount: no render yet");
+  *count = static_cast<uint32_t>(context->last.stats.devices.size());
+  return PRISM_OK;
+}
+
 PRISM_API PrismStatus prismGetRenderDeviceShare(PrismContext context, uint32_t position, PrismDeviceShare* share) {
   PRISM_REQUIRE(context && share, "prismGetRenderDeviceShare: NULL argument");
   PRISM_REQUIRE(share->struct_size >= sizeof(PrismDeviceShare),
@@ -432,6 +475,7 @@ PRISM_API PrismStatus prismGetRenderDeviceShare(PrismContext context, uint32_t p
   share->busy_seconds = d.busy_seconds;
   share->failed = d.failed ? 1 : 0;
   share->failure = d.failure.c_str();
+  share->device = d.device.c_str();
   return PRISM_OK;
 }
 

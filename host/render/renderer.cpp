@@ -90,7 +90,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
     DeviceShare& share = result.stats.devices[i];
     share.device = m_contexts[i]->device().name;
     try {
-      m_tracers[i]->load(frame, m_device_stats[i], k > 1);
+      m_tracers[i]->load(frame, m_device_stats[i], k > 1 || m_parts.shared());
     } catch (const DeviceError& e) {
       if (k == 1) throw;
       share.failed = true;
@@ -110,14 +110,35 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   RenderStats& stats = result.stats;
   const size_t pixels = static_cast<size_t>(options.width) * options.height;
   stats.rays_per_pixel = static_cast<double>(stats.rays_by_kind[RAY_KIND_PRIMARY]) / static_cast<double>(pixels);
-  // AOVs: each pixel from the device whose sample wrote it.
-  const size_t first = survivor(stats);
-  m_tracers[first]->readAovs(result.depth, result.normal, result.primid, result.albedo);
-  for (size_t i = first + 1; i < k; ++i) {
-    if (stats.devices[i].failed) continue;
-    std::vector<float> depth, normal, albedo;
-    std::vector<std::int32_t> primid;
-    m_tracers[i]->readAovs(depth, normal, primid, albedo);
+  gatherAovs(result);
+  if (m_parts.part != 0) result.rgba.assign(4 * pixels, 0.f);  // the image is part 0's
+  for (auto& t : m_tracers) t->unload();
+  if (m_parts.shared()) {
+    // Part 0 reports every part's devices and warnings.
+    ByteWriter out;
+    if (m_parts.part != 0) packShares(out, stats);
+    const std::vector<Bytes> got = m_parts.exchange(false, out.take());
+    if (m_parts.part == 0) {
+      for (DeviceShare& d : stats.devices) d.device = "part 0: " + d.device;
+      for (std::string& w : stats.warnings) w = "part 0: " + w;
+      for (std::uint32_t p = 1; p < m_parts.parts; ++p) {
+        ByteReader in(got.at(p));
+        unpackShares(in, p, stats);
+      }
+    }
+  }
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // The devices start up side by side: the frame waited for the slowest.
+  for (Context* c : m_contexts) stats.first_launch_seconds = std::max(stats.first_launch_seconds, c->takeFirstLaunchSeconds());
+  if (options.profile) {
+    for (Context* c : m_contexts) mergeKernelTimes(stats.kernels, c->profile().stop());
+  }
+  return result;
+}
+
+void Renderer::gatherAovs(RenderResult& result) {
+  const size_t pixels = static_cast<size_t>(result.width) * static_cast<size_t>(result.height);
+  const auto merge = [&](const float* depth, const float* normal, const std::int32_t* primid, const float* albedo) {
     for (size_t p = 0; p < pixels; ++p) {
       if (primid[p] == DeviceTracer::kAovUnwritten) continue;
       result.primid[p] = primid[p];
@@ -127,15 +148,51 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
         result.albedo[3 * p + c] = albedo[3 * p + c];
       }
     }
+  };
+  std::vector<float> depth, normal, albedo;
+  std::vector<std::int32_t> primid;
+  const size_t first = survivor(result.stats);
+  m_tracers[first]->readAovs(result.depth, result.normal, result.primid, result.albedo);
+  for (size_t i = first + 1; i < m_tracers.size(); ++i) {
+    if (result.stats.devices[i].failed) continue;
+    m_tracers[i]->readAovs(depth, normal, primid, albedo);
+    merge(depth.data(), normal.data(), primid.data(), albedo.data());
   }
-  for (auto& t : m_tracers) t->unload();
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // The devices start up side by side: the frame waited for the slowest.
-  for (Context* c : m_contexts) stats.first_launch_seconds = std::max(stats.first_launch_seconds, c->takeFirstLaunchSeconds());
-  if (options.profile) {
-    for (Context* c : m_contexts) mergeKernelTimes(stats.kernels, c->profile().stop());
+  if (!m_parts.shared()) return;
+  ByteWriter out;
+  if (m_parts.part != 0) {
+    out.putArray(result.depth.data(), pixels);
+    out.putArray(result.normal.data(), 3 * pixels);
+    out.putArray(result.primid.data(), pixels);
+    out.putArray(result.albedo.data(), 3 * pixels);
   }
-  return result;
+  const std::vector<Bytes> got = m_parts.exchange(false, out.take());
+  if (m_parts.part != 0) {
+    result.depth.assign(pixels, 0.f);
+    result.normal.assign(3 * pixels, 0.f);
+    result.primid.assign(pixels, -1);
+    result.albedo.assign(3 * pixels, 0.f);
+    return;
+  }
+  depth.resize(pixels);
+  normal.resize(3 * pixels);
+  primid.resize(pixels);
+  albedo.resize(3 * pixels);
+  for (std::uint32_t p = 1; p < m_parts.parts; ++p) {
+    ByteReader in(got.at(p));
+    in.getArray(depth.data(), pixels);
+    in.getArray(normal.data(), 3 * pixels);
+    in.getArray(primid.data(), pixels);
+    in.getArray(albedo.data(), 3 * pixels);
+    merge(depth.data(), normal.data(), primid.data(), albedo.data());
+  }
+}
+
+void Renderer::setFrameParts(FrameParts parts) {
+  if (parts.parts == 0 || parts.part >= parts.parts)
+    throw std::invalid_argument("Renderer::setFrameParts: part must be below parts");
+  if (parts.shared() && !parts.exchange) throw std::invalid_argument("Renderer::setFrameParts: no exchange");
+  m_parts = std::move(parts);
 }
 
 void Renderer::setFilmBatchSlices(size_t slices) {
@@ -156,6 +213,9 @@ size_t Renderer::survivor(const RenderStats& stats) const {
 std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_samples,
                                    const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
                                    const ProgressFn& progress) {
+  const auto [mine_first, mine_last] = partUnits(unit_samples.size(), m_parts.part, m_parts.parts);
+  const std::vector<std::uint64_t> mine(unit_samples.begin() + static_cast<std::ptrdiff_t>(mine_first),
+                                        unit_samples.begin() + static_cast<std::ptrdiff_t>(mine_last));
   std::vector<std::uint64_t> started(m_tracers.size(), 0);
   // Counts are kept per unit, so that a unit traced again after its device
   // failed counts once, whoever traced it.
@@ -167,16 +227,26 @@ std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_sample
     ++started[d];
     RenderStats& tracer_counts = m_device_stats[d];  // where the tracer counts (DeviceTracer::load)
     tracer_counts = RenderStats{};
-    unit(*m_tracers[d], u);
-    counts[u] = std::move(tracer_counts);
+    unit(*m_tracers[d], mine_first + u);
+    counts[mine_first + u] = std::move(tracer_counts);
   };
-  // With one device, progress comes chunk by chunk from the unit itself.
+  // With one device alone, progress comes chunk by chunk from the unit itself.
   std::function<bool(size_t, size_t)> step;
-  if (m_tracers.size() > 1 && progress)
+  if (unitsOfSlices() && progress)
     step = [&](size_t done, size_t units) { return progress(static_cast<double>(done) / static_cast<double>(units)); };
-  DealResult dealt = dealUnits(result.stats.devices, unit_samples, traced, step);
+  DealResult dealt = dealUnits(result.stats.devices, mine, traced, step);
   for (std::string& w : dealt.warnings) result.stats.warnings.push_back(std::move(w));
   if (dealt.cancelled) throw RenderCancelled();
+  if (m_parts.shared()) {
+    ByteWriter out;
+    if (m_parts.part != 0) packUnitCounts(out, counts.data() + mine_first, mine_last - mine_first);
+    const std::vector<Bytes> got = m_parts.exchange(false, out.take());
+    for (std::uint32_t p = 1; m_parts.part == 0 && p < m_parts.parts; ++p) {
+      const auto [first, last] = partUnits(unit_samples.size(), p, m_parts.parts);
+      ByteReader in(got.at(p));
+      unpackUnitCounts(in, counts.data() + first, last - first);
+    }
+  }
   // In unit order: the first non-finite contribution is the first unit's that
   // found one (render order, as on one device).
   RenderStats& stats = result.stats;
@@ -187,13 +257,15 @@ std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_sample
     stats.film_batches += c.film_batches;
     if (c.nan && !stats.nan) stats.nan = c.nan;
   }
-  return dealt.owner;
+  std::vector<size_t> owner(unit_samples.size(), kElsewhere);
+  std::copy(dealt.owner.begin(), dealt.owner.end(), owner.begin() + static_cast<std::ptrdiff_t>(mine_first));
+  return owner;
 }
 
 void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOptions& opt, RenderResult& result,
                              const ProgressFn& progress) {
   const std::uint64_t total = sampleCount(sampling.mode, opt.width, opt.height, sampling.spp);
-  const bool several = m_tracers.size() > 1;
+  const bool several = unitsOfSlices();
   for (size_t i = 0; i < m_tracers.size(); ++i)
     if (!result.stats.devices[i].failed) m_tracers[i]->beginSampleFilm(total);
   // Units: a slice (one chunk), or the Z-buffer's batch, which it rasterises at once.
@@ -211,17 +283,41 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
         });
       },
       result, progress);
-  // The units other devices traced go to the one that resolves the frame.
+  // The units other devices traced go to the one that resolves the frame; at
+  // the other parts, to part 0.
+  const bool resolves = m_parts.part == 0;
   const size_t resolver = survivor(result.stats);
   std::vector<float> rgba, xy;
+  ByteWriter out;
   for (size_t u = 0; u < owner.size(); ++u) {
-    if (owner[u] == resolver) continue;
+    if (owner[u] == kElsewhere || (resolves && owner[u] == resolver)) continue;
     const std::uint64_t first = u * unit_size;
     const size_t n = static_cast<size_t>(unit_samples[u]);
     rgba.resize(4 * n);
     xy.resize(2 * n);
     m_tracers[owner[u]]->readSamples(first, n, rgba.data(), xy.data());
-    m_tracers[resolver]->writeSamples(first, n, rgba.data(), xy.data());
+    if (resolves) {
+      m_tracers[resolver]->writeSamples(first, n, rgba.data(), xy.data());
+    } else {
+      out.putArray(rgba.data(), 4 * n);
+      out.putArray(xy.data(), 2 * n);
+    }
+  }
+  if (m_parts.shared()) {
+    const std::vector<Bytes> got = m_parts.exchange(false, out.take());
+    if (!resolves) return;  // render() gives the other parts zeros
+    for (std::uint32_t p = 1; p < m_parts.parts; ++p) {
+      const auto [first_unit, last_unit] = partUnits(unit_samples.size(), p, m_parts.parts);
+      ByteReader in(got.at(p));
+      for (size_t u = first_unit; u < last_unit; ++u) {
+        const size_t n = static_cast<size_t>(unit_samples[u]);
+        rgba.resize(4 * n);
+        xy.resize(2 * n);
+        in.getArray(rgba.data(), 4 * n);
+        in.getArray(xy.data(), 2 * n);
+        m_tracers[resolver]->writeSamples(u * unit_size, n, rgba.data(), xy.data());
+      }
+    }
   }
   result.rgba = m_tracers[resolver]->resolvePixels();
 }
@@ -232,7 +328,7 @@ void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptio
   // Passes: the corners, then at most one per level. Progress counts passes, each
   // in proportion to its chunks (with several devices, its units) done.
   const double passes = 1.0 + sampling.adaptive_max_level;
-  const bool several = m_tracers.size() > 1;
+  const bool several = unitsOfSlices();
   int pass = 0;
   std::uint64_t traced = 0;  // positions of the passes before
   TraceFn trace = [&](const std::vector<float>& xy) {
@@ -245,8 +341,9 @@ void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptio
       if (x == std::floor(x) && y == std::floor(y) && x < w && y < h)
         aov[k] = static_cast<std::int32_t>(static_cast<std::int64_t>(y) * w + static_cast<std::int64_t>(x));
     }
-    // One unit with one device; with several, whole chunks (or Z-buffer
-    // batches), counted from the pass's first position as one device counts them.
+    // One unit with one device alone; with several, or parts, whole chunks (or
+    // Z-buffer batches), counted from the pass's first position as one device
+    // counts them.
     const size_t unit_size = !several ? std::max<size_t>(n, 1)
                              : result.stats.first_hit == FirstHitMode::ZBuffer ? DeviceTracer::kZBufferBatch
                                                                                : DeviceTracer::kSliceRays;
@@ -268,6 +365,23 @@ void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptio
         result,
         several && progress ? ProgressFn([&](double f) { return progress(std::min(1.0, (pass + f) / passes)); })
                             : ProgressFn());
+    if (m_parts.shared()) {
+      // Every part chooses the next pass's points from every colour of this one.
+      const auto positions = [&](std::uint32_t p) {
+        const auto [first, last] = partUnits(unit_samples.size(), p, m_parts.parts);
+        return std::make_pair(std::min(n, first * unit_size), std::min(n, last * unit_size));
+      };
+      const auto [lo, hi] = positions(m_parts.part);
+      ByteWriter out;
+      out.putArray(rgba.data() + 4 * lo, 4 * (hi - lo));
+      const std::vector<Bytes> got = m_parts.exchange(true, out.take());
+      for (std::uint32_t p = 0; p < m_parts.parts; ++p) {
+        if (p == m_parts.part) continue;
+        const auto [plo, phi] = positions(p);
+        ByteReader in(got.at(p));
+        in.getArray(rgba.data() + 4 * plo, 4 * (phi - plo));
+      }
+    }
     ++pass;
     traced += n;
     return rgba;

@@ -20,6 +20,7 @@
 #include "device/kernel_profile.h"
 #include "render/device_tracer.h"
 #include "render/firsthit.h"
+#include "render/frame_parts.h"
 #include "render/gpu_scene.h"
 #include "render/render_options.h"
 #include "render/render_stats.h"
@@ -82,6 +83,11 @@ class Renderer {
   void injectDeviceFault(size_t device, std::uint64_t unit);
   void clearDeviceFaults() { m_faults.clear(); }
 
+  // Share the next frames with other processes (render/frame_parts.h): this one
+  // traces its part of the units, and only part 0's result holds the image, its
+  // AOVs and the frame's counts (the other parts' hold zeros and their own).
+  void setFrameParts(FrameParts parts);
+
  private:
   // The sampling modes whose positions come from kernels/supersample.cl, resolved
   // by kernels/resolve.cl.
@@ -91,12 +97,18 @@ class Renderer {
   // traceFilmPositions.
   void renderAdaptive(const SamplingOptions& sampling, const RenderOptions& options, RenderResult& result,
                       const ProgressFn& progress);
-  // Runs unit(tracer, u) for every unit over the devices; fills
-  // result.stats.devices and its warnings, adds the units' counts to
-  // result.stats; returns which tracer did each unit.
+  // Runs unit(tracer, u) over the devices for every unit of this process's part
+  // of the frame; fills result.stats.devices and its warnings, adds the units'
+  // counts to result.stats (at part 0, every part's); returns which tracer did
+  // each unit (kElsewhere: another part).
   std::vector<size_t> deal(const std::vector<std::uint64_t>& unit_samples,
                            const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
                            const ProgressFn& progress);
+  static constexpr size_t kElsewhere = ~size_t{0};
+  // Units of slices (with several devices, or parts) rather than one unit a pass.
+  bool unitsOfSlices() const { return m_tracers.size() > 1 || m_parts.shared(); }
+  // The AOVs: each pixel from the device (and the part) whose sample wrote it.
+  void gatherAovs(RenderResult& result);
   // The first device that did not fail this frame.
   size_t survivor(const RenderStats& stats) const;
 
@@ -105,6 +117,7 @@ class Renderer {
   std::vector<RenderStats> m_device_stats;  // where each tracer counts its current unit
   AccelBuildOptions m_accel_build;
   std::vector<std::pair<size_t, std::uint64_t>> m_faults;  // (device, unit)
+  FrameParts m_parts;
 };
 
 }  // namespace prism

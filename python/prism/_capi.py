@@ -58,7 +58,7 @@ class NanReport(Structure):
 
 class DeviceShare(Structure):
     _fields_ = [("struct_size", c_size_t), ("units", c_uint64), ("samples", c_uint64), ("busy_seconds", c_double),
-                ("failed", c_uint32), ("failure", c_char_p)]
+                ("failed", c_uint32), ("failure", c_char_p), ("device", c_char_p)]
 
 
 class RenderStats(Structure):
@@ -100,6 +100,7 @@ _FUNCTIONS = {
     "prismGetContextDevice": (Status, [c_void_p, POINTER(DeviceInfo)]),
     "prismGetContextDeviceCount": (Status, [c_void_p, POINTER(c_uint32)]),
     "prismGetContextDeviceAt": (Status, [c_void_p, c_uint32, POINTER(DeviceInfo)]),
+    "prismGetRenderDeviceShareCount": (Status, [c_void_p, POINTER(c_uint32)]),
     "prismGetRenderDeviceShare": (Status, [c_void_p, c_uint32, POINTER(DeviceShare)]),
     "prismGetRenderWarningCount": (Status, [c_void_p, POINTER(c_uint32)]),
     "prismGetRenderWarning": (Status, [c_void_p, c_uint32, POINTER(c_char_p)]),

@@ -172,12 +172,14 @@ class Context:
         return Render(rgba, {name: self._aov(name, o) for name in aovs}, stats_dict)
 
     def _device_shares(self):
+        count = ctypes.c_uint32()
+        check(lib.prismGetRenderDeviceShareCount(self._handle, ctypes.byref(count)))
         shares = []
-        for i, device in enumerate(self.devices):
+        for i in range(count.value):
             share = _capi.DeviceShare()
             share.struct_size = ctypes.sizeof(share)
             check(lib.prismGetRenderDeviceShare(self._handle, i, ctypes.byref(share)))
-            shares.append({"device": device["name"], "units": share.units, "samples": share.samples,
+            shares.append({"device": (share.device or b"").decode(), "units": share.units, "samples": share.samples,
                            "busy_seconds": share.busy_seconds, "failed": bool(share.failed),
                            "failure": (share.failure or b"").decode()})
         return shares

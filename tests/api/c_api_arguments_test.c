@@ -32,6 +32,13 @@ static void expect(PrismStatus status, PrismStatus want, const char* name, const
 #define EXPECT(call, want, name) expect((call), (want), (name), #call, __LINE__)
 #define BAD(call, name) EXPECT(call, PRISM_ERROR_INVALID_ARGUMENT, name)
 
+/* A transport that fails at once (prismSetFrameParts). */
+static int failingExchange(void* user, int to_all, const void* data, uint64_t size, PrismReceiveFn receive,
+                           void* receiver) {
+  (void)user, (void)to_all, (void)data, (void)size, (void)receive, (void)receiver;
+  return 5;
+}
+
 int main(int argc, char** argv) {
   char path[4096];
   uint32_t count = 0, u32 = 0;
@@ -52,6 +59,7 @@ int main(int argc, char** argv) {
   PrismRenderStats stats;
   PrismNanReport nan_report;
   PrismDeviceShare share;
+  PrismFrameParts parts;
   PrismDeviceInfo first_info;
   uint32_t devices = 0;
   PrismAccel accel;
@@ -257,6 +265,7 @@ int main(int argc, char** argv) {
   memset(&share, 0, sizeof share);
   share.struct_size = sizeof share;
   EXPECT(prismGetRenderDeviceShare(ctx, 0, &share), PRISM_ERROR_INVALID_OPERATION, "prismGetRenderDeviceShare");
+  EXPECT(prismGetRenderDeviceShareCount(ctx, &u32), PRISM_ERROR_INVALID_OPERATION, "prismGetRenderDeviceShareCount");
   EXPECT(prismGetRenderWarningCount(ctx, &u32), PRISM_ERROR_INVALID_OPERATION, "prismGetRenderWarningCount");
   EXPECT(prismGetRenderWarning(ctx, 0, &text), PRISM_ERROR_INVALID_OPERATION, "prismGetRenderWarning");
   memset(&nan_report, 0, sizeof nan_report);
@@ -311,6 +320,37 @@ int main(int argc, char** argv) {
   CHECK_OK(prismGetRenderDeviceShare(ctx, 0, &share));
   /* one device traced every sample of the 8x6 render, one per pixel */
   CHECK(share.units == 1 && share.samples == 8 * 6 && share.failed == 0 && share.failure && share.failure[0] == 0);
+  CHECK(share.device && strcmp(share.device, first_info.name) == 0);
+  BAD(prismGetRenderDeviceShareCount(NULL, &u32), "prismGetRenderDeviceShareCount");
+  BAD(prismGetRenderDeviceShareCount(ctx, NULL), "prismGetRenderDeviceShareCount");
+  CHECK_OK(prismGetRenderDeviceShareCount(ctx, &u32));
+  CHECK(u32 == 1);
+
+  /* A frame shared by processes: the parts are checked; a transport that fails
+   * fails the render; NULL renders alone again. */
+  memset(&parts, 0, sizeof parts);
+  BAD(prismSetFrameParts(ctx, &parts), "prismSetFrameParts"); /* struct_size */
+  parts.struct_size = sizeof parts;
+  BAD(prismSetFrameParts(NULL, &parts), "prismSetFrameParts");
+  BAD(prismSetFrameParts(ctx, &parts), "prismSetFrameParts"); /* parts 0 */
+  parts.parts = 2;
+  parts.part = 2;
+  parts.exchange = failingExchange;
+  BAD(prismSetFrameParts(ctx, &parts), "prismSetFrameParts");
+  parts.part = 1;
+  parts.exchange = NULL;
+  BAD(prismSetFrameParts(ctx, &parts), "prismSetFrameParts");
+  parts.exchange = failingExchange;
+  CHECK_OK(prismSetFrameParts(ctx, &parts));
+  EXPECT(prismRender(ctx, scene, &small, rgba, NULL), PRISM_ERROR_UNKNOWN, "prismRender");
+  CHECK(strstr(prismGetLastError(), "returned 5") != NULL);
+  CHECK_OK(prismSetFrameParts(ctx, NULL));
+  CHECK_OK(prismRender(ctx, scene, &small, rgba, NULL));
+  parts.parts = 1;
+  parts.part = 0;
+  parts.exchange = NULL;
+  CHECK_OK(prismSetFrameParts(ctx, &parts)); /* one part: alone */
+  CHECK_OK(prismRender(ctx, scene, &small, rgba, NULL));
   BAD(prismGetRenderWarningCount(NULL, &u32), "prismGetRenderWarningCount");
   BAD(prismGetRenderWarningCount(ctx, NULL), "prismGetRenderWarningCount");
   CHECK_OK(prismGetRenderWarningCount(ctx, &u32));

@@ -1,0 +1,94 @@
+#include "render/frame_parts.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace prism {
+
+std::pair<std::size_t, std::size_t> partUnits(std::size_t units, std::uint32_t part, std::uint32_t parts) {
+  if (parts == 0 || part >= parts) throw std::invalid_argument("partUnits: part must be below parts");
+  const auto at = [&](std::uint64_t p) { return static_cast<std::size_t>(units * p / parts); };
+  return {at(part), at(part + 1u)};
+}
+
+void ByteWriter::putRaw(const void* data, std::size_t size) {
+  const auto* p = static_cast<const std::uint8_t*>(data);
+  m_bytes.insert(m_bytes.end(), p, p + size);
+}
+
+void ByteWriter::putString(const std::string& s) {
+  put<std::uint64_t>(s.size());
+  putRaw(s.data(), s.size());
+}
+
+void ByteReader::getRaw(void* data, std::size_t size) {
+  if (size > m_bytes.size() - m_at)
+    throw std::runtime_error("frame parts: a part sent fewer bytes than expected (different builds of prism, "
+                             "or a different scene or options on another part?)");
+  std::memcpy(data, m_bytes.data() + m_at, size);
+  m_at += size;
+}
+
+std::string ByteReader::getString() {
+  const auto n = get<std::uint64_t>();
+  std::string s(n <= m_bytes.size() - m_at ? static_cast<std::size_t>(n) : 0, '\0');
+  getRaw(s.data(), static_cast<std::size_t>(n));
+  return s;
+}
+
+void packUnitCounts(ByteWriter& out, const RenderStats* counts, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const RenderStats& c = counts[i];
+    out.putArray(c.rays_by_kind.data(), c.rays_by_kind.size());
+    out.putArray(c.rays_per_depth.data(), c.rays_per_depth.size());
+    out.put<std::int32_t>(c.waves);
+    out.put<std::int32_t>(c.film_batches);
+    out.put<std::uint8_t>(c.nan.has_value());
+    if (c.nan) out.put(*c.nan);
+  }
+}
+
+void unpackUnitCounts(ByteReader& in, RenderStats* counts, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    RenderStats& c = counts[i];
+    in.getArray(c.rays_by_kind.data(), c.rays_by_kind.size());
+    in.getArray(c.rays_per_depth.data(), c.rays_per_depth.size());
+    c.waves = in.get<std::int32_t>();
+    c.film_batches = in.get<std::int32_t>();
+    if (in.get<std::uint8_t>()) c.nan = in.get<NanFinding>();
+  }
+}
+
+void packShares(ByteWriter& out, const RenderStats& stats) {
+  out.put<std::uint64_t>(stats.devices.size());
+  for (const DeviceShare& d : stats.devices) {
+    out.putString(d.device);
+    out.put(d.units);
+    out.put(d.samples);
+    out.put(d.busy_seconds);
+    out.put<std::uint8_t>(d.failed);
+    out.putString(d.failure);
+  }
+  out.put<std::uint64_t>(stats.warnings.size());
+  for (const std::string& w : stats.warnings) out.putString(w);
+}
+
+void unpackShares(ByteReader& in, std::uint32_t part, RenderStats& stats) {
+  const std::string prefix = "part " + std::to_string(part) + ": ";
+  const auto devices = in.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < devices; ++i) {
+    DeviceShare d;
+    d.device = prefix + in.getString();
+    d.units = in.get<std::uint64_t>();
+    d.samples = in.get<std::uint64_t>();
+    d.busy_seconds = in.get<double>();
+    d.failed = in.get<std::uint8_t>() != 0;
+    d.failure = in.getString();
+    stats.devices.push_back(std::move(d));
+  }
+  const auto warnings = in.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < warnings; ++i) stats.warnings.push_back(prefix + in.getString());
+}
+
+}  // namespace prism
