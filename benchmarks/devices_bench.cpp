@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "bench_options.h"
+#include "bench_process.h"
 #include "device/context.h"
 #include "device/device_list.h"
 #include "render/renderer.h"
@@ -27,11 +28,6 @@ const char* kUsage =
     "against the sum of the solos and against the fastest solo, and whether the\n"
     "images are the same bit for bit. Try several PoCL devices of one CPU with\n"
     "POCL_DEVICES=\"pthread pthread\".\n";
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
 
 double mrays(const RenderResult& r) {
   const double tracing = r.stats.seconds - r.stats.setup_seconds;

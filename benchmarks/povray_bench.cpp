@@ -1,5 +1,7 @@
 #include "povray_bench.h"
 
+#include "bench_process.h"
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -46,24 +48,6 @@ struct Settings {
   double min_weight = 1.0 / 255.0;
 };
 
-std::string shellQuote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs `command` and returns its standard output and error together.
-std::string capture(const std::string& command, int* status) {
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
-  if (!pipe) throw std::runtime_error("cannot run: " + command);
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
-  *status = pclose(pipe.release());
-  return out;
-}
-
 bool povrayInstalled(const Settings& s) {
   int status = 0;
   capture("command -v " + shellQuote(s.povray), &status);
@@ -84,11 +68,6 @@ double runPovray(const Settings& s, const std::string& pov, const std::string& p
   if (status != 0 || open == std::string::npos)
     throw std::runtime_error("POV-Ray failed (" + command + "):\n" + out.substr(out.size() > 2000 ? out.size() - 2000 : 0));
   return std::stod(out.substr(open + 1));
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace

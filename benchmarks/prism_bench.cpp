@@ -19,6 +19,7 @@
 #include "shadows_bench.h"   // prism-bench shadows: parses its own options
 #include "devices_bench.h"   // prism-bench devices: parses its own options
 #include "povray_bench.h"    // prism-bench povray: parses its own options
+#include "mpi_bench.h"       // prism-bench mpi: parses its own options
 
 namespace {
 
@@ -31,6 +32,7 @@ const char* kUsage =
     "       prism-bench patches [options]              (see prism-bench patches --help)\n"
     "       prism-bench shadows [options]              (see prism-bench shadows --help)\n"
     "       prism-bench devices [options]              (see prism-bench devices --help)\n"
+    "       prism-bench mpi [options]                  (see prism-bench mpi --help)\n"
     "       prism-bench mesh [--data DIR] NAME         the path of one ladder mesh, e.g.\n"
     "                                                  bunny/bunny_loop2_1.1M.ply (made if needed)\n"
     "\n"
@@ -124,9 +126,10 @@ int main(int argc, char** argv) {
   if (args[0] == "patches") return prism::bench::patchMain(args);
   if (args[0] == "shadows") return prism::bench::shadowsMain(args);
   if (args[0] == "devices") return prism::bench::devicesMain(args);
+  if (args[0] == "mpi") return prism::bench::mpiMain(args);
   if (args[0] == "mesh") return meshPathMain(args);
   if (args[0] != "accel")
-    usageError("unknown command '" + args[0] + "' (expected accel, firsthit, distributed, povray, polygons, patches, shadows, devices or mesh)");
+    usageError("unknown command '" + args[0] + "' (expected accel, firsthit, distributed, povray, polygons, patches, shadows, devices, mpi or mesh)");
   prism::bench::AccelBenchOptions options;
   options.command = "prism-bench";
   for (const std::string& a : args) options.command += " " + a;

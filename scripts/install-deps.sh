@@ -16,6 +16,7 @@ packages=(
   bc
   python3 python3-venv     # the Python package and its tests (scripts/test-python.sh)
   oclgrind                 # the kernels under a checking simulator (tests/oclgrind/)
+  libopenmpi-dev openmpi-bin  # mpirun prism render: ranks share each frame (tests/mpi/)
 )
 
 missing=()

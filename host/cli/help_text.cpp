@@ -158,7 +158,10 @@ Device:
                     GPU, else the first device. 'all', or a list such as 0,2, shares
                     each frame over several devices: a faster one takes more of it,
                     one that fails mid-frame is left out with a warning, and the
-                    image is the same bit for bit as on one device of that kind
+                    image is the same bit for bit as on one device of that kind.
+                    Under 'mpirun -np N prism render ...' (a build with MPI) the N
+                    processes share each frame, each on its --device; rank 0
+                    writes the image, the same bit for bit as one process's
   --no-cache        compile the kernels afresh, without reading or filling the kernel
                     cache (see PRISM_CACHE_DIR in 'prism --help')
 

@@ -9,6 +9,7 @@
 #include "args.h"
 #include "commands.h"
 #include "help_text.h"
+#include "mpi_ranks.h"
 #include "prism.h"
 
 namespace {
@@ -66,10 +67,7 @@ std::string helpHint(const std::vector<std::string>& args) {
   return "prism --help";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
+int run(const std::vector<std::string>& args) {
   try {
     return dispatch(args);
   } catch (const UsageError& e) {
@@ -83,4 +81,11 @@ int main(int argc, char** argv) {
     printError(e.what());
     return kExitFailure;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Under mpirun, a failure on one rank ends them all (endRanks).
+  return endRanks(run(std::vector<std::string>(argv + 1, argv + argc)));
 }

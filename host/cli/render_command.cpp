@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "help_text.h"
 #include "interrupt.h"
+#include "mpi_ranks.h"
 #include "prism.h"
 #include "progress_bar.h"
 #include "render_args.h"
@@ -256,19 +257,16 @@ void printStageTimes(PrismContext context, const PrismRenderStats& stats) {
               stats.trace_seconds > 0 ? 100.0 * rest / stats.trace_seconds : 0.0);
 }
 
-// --stats with several devices: how the frame was shared.
+// --stats with several devices (or MPI ranks): how the frame was shared.
 void printDeviceShares(PrismContext context) {
   uint32_t count = 0;
-  if (prismGetContextDeviceCount(context, &count) != PRISM_OK || count < 2) return;
+  if (prismGetRenderDeviceShareCount(context, &count) != PRISM_OK || count < 2) return;
   std::printf("  %-40s %8s %12s %10s\n", "device", "units", "samples", "busy s");
   for (uint32_t i = 0; i < count; ++i) {
-    PrismDeviceInfo info{};
     PrismDeviceShare share{};
     share.struct_size = sizeof share;
-    if (prismGetContextDeviceAt(context, i, &info) != PRISM_OK ||
-        prismGetRenderDeviceShare(context, i, &share) != PRISM_OK)
-      return;
-    std::printf("  [%u] %-36.36s %8llu %12llu %10.3f%s\n", info.index, info.name,
+    if (prismGetRenderDeviceShare(context, i, &share) != PRISM_OK) return;
+    std::printf("  [%u] %-36.36s %8llu %12llu %10.3f%s\n", i, share.device,
                 static_cast<unsigned long long>(share.units), static_cast<unsigned long long>(share.samples),
                 share.busy_seconds, share.failed ? "  (failed)" : "");
   }
@@ -319,6 +317,7 @@ int runRender(const std::vector<std::string>& args) {
     std::fputs(kRenderHelp, stdout);
     return kExitOk;
   }
+  const Ranks ranks = startRanks();
   if (!outputFolderExists(request.output_path)) {
     printError("cannot write '" + request.output_path + "': folder '" +
                std::filesystem::path(request.output_path).parent_path().string() + "' does not exist");
@@ -371,7 +370,13 @@ int runRender(const std::vector<std::string>& args) {
                                                          : nullptr;
   if (prismCreateContext(selector, &context_options, &raw_context) != PRISM_OK) return failWithLastError();
   const ContextHandle context(raw_context);
-  const std::string devices = devicesText(context.get());
+  std::string devices = devicesText(context.get());
+  if (ranks.shared()) {
+    // Every rank renders its part of the frame; rank 0 writes it and reports.
+    const PrismFrameParts parts = frameParts(ranks);
+    if (prismSetFrameParts(context.get(), &parts) != PRISM_OK) return failWithLastError();
+    devices = std::to_string(ranks.size) + " MPI ranks (rank 0 on " + devices + ")";
+  }
 
   std::vector<float> rgba(static_cast<size_t>(options.width) * options.height * 4);
   PrismRenderStats stats{};
@@ -379,7 +384,7 @@ int runRender(const std::vector<std::string>& args) {
   PrismStatus status;
   {
     const InterruptGuard interrupt;
-    ProgressBar bar(!request.quiet && stderrIsTerminal());
+    ProgressBar bar(!request.quiet && ranks.rank == 0 && stderrIsTerminal());
     if (prismSetProgressCallback(context.get(), onProgress, &bar) != PRISM_OK) return failWithLastError();
     status = prismRender(context.get(), scene.get(), &options, rgba.data(), &stats);
     prismSetProgressCallback(context.get(), nullptr, nullptr);
@@ -390,6 +395,7 @@ int runRender(const std::vector<std::string>& args) {
     }
   }
   if (status != PRISM_OK) return failWithLastError();
+  if (ranks.rank != 0) return kExitOk;
   uint32_t warnings = 0;
   prismGetRenderWarningCount(context.get(), &warnings);
   for (uint32_t i = 0; i < warnings; ++i) {

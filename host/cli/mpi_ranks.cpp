@@ -1,0 +1,128 @@
+#include "mpi_ranks.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "args.h"
+
+#ifdef PRISM_WITH_MPI
+#include <mpi.h>
+#endif
+
+namespace prism_cli {
+namespace {
+
+// Set by mpirun (OpenMPI), or by other launchers through PMI/PMIx.
+std::uint32_t launchedRanks() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"}) {
+    if (const char* value = std::getenv(name)) return static_cast<std::uint32_t>(std::strtoul(value, nullptr, 10));
+  }
+  return 0;
+}
+
+#ifdef PRISM_WITH_MPI
+bool g_started = false;
+Ranks g_ranks;
+
+// MPI counts in int: large exchanges go in pieces.
+constexpr std::uint64_t kPiece = 1u << 30;
+
+void sendBytes(const void* data, std::uint64_t size, int to) {
+  MPI_Send(&size, 1, MPI_UINT64_T, to, 0, MPI_COMM_WORLD);
+  const auto* bytes = static_cast<const char*>(data);
+  for (std::uint64_t at = 0; at < size; at += kPiece)
+    MPI_Send(bytes + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, to, 1, MPI_COMM_WORLD);
+}
+
+std::vector<char> receiveBytes(int from) {
+  std::uint64_t size = 0;
+  MPI_Recv(&size, 1, MPI_UINT64_T, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  std::vector<char> bytes(size);
+  for (std::uint64_t at = 0; at < size; at += kPiece)
+    MPI_Recv(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, from, 1, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+  return bytes;
+}
+
+void broadcastBytes(std::vector<char>& bytes, int root) {
+  std::uint64_t size = bytes.size();
+  MPI_Bcast(&size, 1, MPI_UINT64_T, root, MPI_COMM_WORLD);
+  bytes.resize(size);
+  for (std::uint64_t at = 0; at < size; at += kPiece)
+    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, root, MPI_COMM_WORLD);
+}
+
+// PrismFrameParts.exchange over MPI_COMM_WORLD. MPI's own errors end the run
+// (MPI_ERRORS_ARE_FATAL), so a return here is a success.
+int exchange(void*, int to_all, const void* data, std::uint64_t size, PrismReceiveFn receive, void* receiver) {
+  const int rank = static_cast<int>(g_ranks.rank), ranks = static_cast<int>(g_ranks.size);
+  if (to_all) {
+    for (int p = 0; p < ranks; ++p) {
+      std::vector<char> bytes;
+      if (p == rank) bytes.assign(static_cast<const char*>(data), static_cast<const char*>(data) + size);
+      broadcastBytes(bytes, p);
+      receive(receiver, static_cast<std::uint32_t>(p), bytes.data(), bytes.size());
+    }
+    return 0;
+  }
+  if (rank != 0) {
+    sendBytes(data, size, 0);
+    return 0;
+  }
+  receive(receiver, 0, data, size);
+  for (int p = 1; p < ranks; ++p) {
+    const std::vector<char> bytes = receiveBytes(p);
+    receive(receiver, static_cast<std::uint32_t>(p), bytes.data(), bytes.size());
+  }
+  return 0;
+}
+#endif
+
+}  // namespace
+
+#ifdef PRISM_WITH_MPI
+Ranks startRanks() {
+  if (g_started || launchedRanks() == 0) return g_ranks;
+  MPI_Init(nullptr, nullptr);
+  g_started = true;
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  g_ranks.rank = static_cast<std::uint32_t>(rank);
+  g_ranks.size = static_cast<std::uint32_t>(size);
+  return g_ranks;
+}
+
+int endRanks(int code) {
+  if (!g_started) return code;
+  if (code != 0 && g_ranks.shared()) MPI_Abort(MPI_COMM_WORLD, code);
+  MPI_Finalize();
+  g_started = false;
+  return code;
+}
+#else
+Ranks startRanks() {
+  if (launchedRanks() > 1)
+    throw UsageError("mpirun started " + std::to_string(launchedRanks()) +
+                     " ranks, but this prism was built without MPI (configure with -DPRISM_MPI=ON and "
+                     "install libopenmpi-dev), so each would render the whole frame; run it alone");
+  return Ranks{};
+}
+
+int endRanks(int code) { return code; }
+#endif
+
+PrismFrameParts frameParts(const Ranks& ranks) {
+  PrismFrameParts parts{};
+  parts.struct_size = sizeof parts;
+  parts.part = ranks.rank;
+  parts.parts = ranks.size;
+#ifdef PRISM_WITH_MPI
+  if (ranks.shared()) parts.exchange = exchange;
+#endif
+  return parts;
+}
+
+}  // namespace prism_cli

@@ -1,0 +1,30 @@
+// `mpirun -np N prism render ...`: in a build with MPI (cmake -DPRISM_MPI=ON, or
+// auto where OpenMPI is found) the ranks share each frame through
+// prismSetFrameParts, each on its own devices; rank 0 writes the image and
+// prints the report. MPI starts only in a process mpirun launched, so a plain
+// `prism render` needs no MPI at run time.
+#pragma once
+
+#include <cstdint>
+
+#include "prism.h"
+
+namespace prism_cli {
+
+struct Ranks {
+  std::uint32_t rank = 0;
+  std::uint32_t size = 1;
+  bool shared() const { return size > 1; }
+};
+
+// Starts MPI once if mpirun launched this process; a single rank otherwise.
+// Throws UsageError when mpirun launched several ranks of a build without MPI
+// (each would render and write the whole frame).
+Ranks startRanks();
+// The frame parts for prismSetFrameParts (one part alone).
+PrismFrameParts frameParts(const Ranks& ranks);
+// Ends MPI: with several ranks a failure (exit code not 0) ends every rank
+// (MPI_Abort), since the others would wait for this one forever. Returns `code`.
+int endRanks(int code);
+
+}  // namespace prism_cli

@@ -1,0 +1,85 @@
+# mpirun -np N prism render (issue 13): the ranks share each frame and rank 0
+# writes it, the same bits as one process (PFM, whose bytes are the pixels) for
+# the colour image and the AOVs, with 2 and 3 ranks, in the sampling modes that
+# split differently (a sample sequence, adaptive passes, the Z-buffer's batch),
+# and with several devices in each rank; rank 0 alone reports; a rank that fails
+# ends the run with an error instead of leaving the others waiting.
+# Run as: cmake -DPRISM=<exe> -DMPIEXEC=<mpirun> -DSOURCE_DIR=<repo> -DWORK_DIR=<scratch> -P mpi.cmake
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(scene "${SOURCE_DIR}/scenes/whitted.json")
+# 320x240 at 4 spp: 307,200 samples, five units of the sample sequence.
+set(size --width 320 --height 240 --aa jitter --spp 4)
+# Root may run mpirun here (CI runs as root); two PoCL devices per rank for the
+# case that names them all.
+set(env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "POCL_DEVICES=pthread pthread")
+
+function(run)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env ${env} ${ARGN}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+  set(rc "${rc}" PARENT_SCOPE)
+  set(out "${out}" PARENT_SCOPE)
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
+
+function(render ranks name)
+  if(ranks EQUAL 1)
+    run(${PRISM} render "${scene}" -o "${WORK_DIR}/${name}.pfm" --device 0 ${ARGN})
+  else()
+    run(${MPIEXEC} --oversubscribe -np ${ranks} ${PRISM} render "${scene}" -o "${WORK_DIR}/${name}.pfm" ${ARGN})
+  endif()
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${name}: ${ranks} rank(s) exited ${rc}:\n${out}${err}")
+  endif()
+  set(out "${out}" PARENT_SCOPE)
+endfunction()
+
+function(same a b)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/${a}.pfm" "${WORK_DIR}/${b}.pfm"
+    RESULT_VARIABLE differ)
+  if(NOT differ EQUAL 0)
+    message(FATAL_ERROR "${b}.pfm differs from ${a}.pfm, the image of one process")
+  endif()
+endfunction()
+
+# The colour image and two AOVs, sample-sequence modes.
+render(1 one ${size} --quiet)
+render(1 one_normal ${size} --aov normal --quiet)
+render(1 one_depth ${size} --aov depth --quiet)
+render(2 two ${size} --device 0 --stats)
+string(REGEX MATCHALL "prism: rendered" summaries "${out}")
+list(LENGTH summaries n)
+if(NOT n EQUAL 1 OR NOT out MATCHES "on 2 MPI ranks \\(rank 0 on '")
+  message(FATAL_ERROR "rank 0 alone must print the summary, naming the ranks:\n${out}")
+endif()
+if(NOT out MATCHES "\\[1\\] part 1: ")
+  message(FATAL_ERROR "--stats must show every rank's devices:\n${out}")
+endif()
+same(one two)
+render(3 three ${size} --device 0 --quiet)
+same(one three)
+render(3 three_normal ${size} --device 0 --aov normal --quiet)
+same(one_normal three_normal)
+render(2 two_depth ${size} --device 0 --aov depth --quiet)
+same(one_depth two_depth)
+# Several devices in each rank.
+render(2 two_all ${size} --device all --quiet)
+same(one two_all)
+
+# Adaptive sampling: every rank chooses each pass's points from every colour.
+render(1 one_adaptive --width 320 --height 240 --aa adaptive --quiet)
+render(3 three_adaptive --width 320 --height 240 --aa adaptive --device 0 --quiet)
+same(one_adaptive three_adaptive)
+
+# The Z-buffer's batch is one unit: one rank traces it, the others nothing.
+render(1 one_zbuffer --width 160 --height 120 --aa jitter --spp 2 --first-hit zbuffer --quiet)
+render(2 two_zbuffer --width 160 --height 120 --aa jitter --spp 2 --first-hit zbuffer --device 0 --quiet)
+same(one_zbuffer two_zbuffer)
+
+# Rank 1 cannot open its device: the run ends with its error, none waits.
+run(${MPIEXEC} --oversubscribe -np 1 ${PRISM} render "${scene}" -o "${WORK_DIR}/fail.pfm" --width 32 --height 24
+    --device 0 : -np 1 ${PRISM} render "${scene}" -o "${WORK_DIR}/fail.pfm" --width 32 --height 24 --device 9)
+if(rc EQUAL 0 OR NOT err MATCHES "9")
+  message(FATAL_ERROR "a rank that fails must end the run with its error (exit ${rc}):\n${out}${err}")
+endif()
