@@ -13,6 +13,7 @@ std::pair<std::size_t, std::size_t> partUnits(std::size_t units, std::uint32_t p
 }
 
 void ByteWriter::putRaw(const void* data, std::size_t size) {
+  if (size == 0) return;
   const auto* p = static_cast<const std::uint8_t*>(data);
   m_bytes.insert(m_bytes.end(), p, p + size);
 }
@@ -26,6 +27,7 @@ void ByteReader::getRaw(void* data, std::size_t size) {
   if (size > m_bytes.size() - m_at)
     throw std::runtime_error("frame parts: a part sent fewer bytes than expected (different builds of prism, "
                              "or a different scene or options on another part?)");
+  if (size == 0) return;  // an empty part's bytes may have no storage at all
   std::memcpy(data, m_bytes.data() + m_at, size);
   m_at += size;
 }
