@@ -35,10 +35,12 @@ def _context(device):
 def render(scene, device=None, aovs=(), progress=None, **options):
     """Renders a scene (a Scene, a scene file's path, or a dict in the scene
     format) and returns its image, float32 (height, width, 4): linear RGB and
-    coverage alpha. With `aovs`, returns the whole prism.Render instead."""
+    coverage alpha. With `aovs`, returns the whole prism.Render instead. The
+    device: `device`, else the scene's render.device, else the default."""
     if not isinstance(scene, Scene):
         scene = Scene.from_json(scene) if isinstance(scene, dict) else Scene.load(scene)
-    result = _context(device).render(scene, aovs=aovs, progress=progress, **options)
+    result = _context(device if device is not None else scene.device).render(scene, aovs=aovs, progress=progress,
+                                                                             **options)
     return result if aovs else result.rgba
 
 

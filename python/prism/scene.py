@@ -75,6 +75,14 @@ class Scene:
         return out
 
     @property
+    def device(self):
+        """The devices the scene asks to render on (render.device: a selector
+        such as "all" or "0,2"), or None when it names none."""
+        text = ctypes.c_char_p()
+        check(lib.prismGetSceneDevice(self._handle, ctypes.byref(text)))
+        return text.value.decode() if text.value else None
+
+    @property
     def object_count(self):
         """The objects so far: the index the next object added gets."""
         count = ctypes.c_uint32()

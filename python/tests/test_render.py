@@ -261,3 +261,16 @@ def test_a_frame_over_several_devices_is_the_image_of_one(scenes_dir):
     done = subprocess.run([sys.executable, "-c", _SEVERAL_DEVICES, os.path.join(scenes_dir, "whitted.json")],
                           env=env, capture_output=True, text=True, timeout=600)
     assert done.returncode == 0 and done.stdout.strip() == "ok", done.stdout + done.stderr
+
+
+def test_the_one_liner_renders_on_the_scene_s_devices_unless_told_otherwise():
+    # The scene's render.device is honoured: a selector naming no device fails
+    # with prism's message, and an explicit device overrides it.
+    scene = whitted_dict()
+    scene.setdefault("render", {})["device"] = "no-such-device-xyz"
+    assert prism.Scene.from_json(scene).device == "no-such-device-xyz"
+    assert prism.Scene.from_json(whitted_dict()).device is None
+    with pytest.raises(prism.DeviceError, match="no-such-device-xyz"):
+        prism.render(scene, width=8, height=6)
+    image = prism.render(scene, device="0", width=8, height=6)
+    assert image.shape == (6, 8, 4)
