@@ -213,7 +213,9 @@ size_t Renderer::survivor(const RenderStats& stats) const {
 std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_samples,
                                    const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
                                    const ProgressFn& progress) {
-  const auto [mine_first, mine_last] = partUnits(unit_samples.size(), m_parts.part, m_parts.parts);
+  // Not a structured binding: the lambda below captures it (C++17).
+  const std::pair<size_t, size_t> mine_range = partUnits(unit_samples.size(), m_parts.part, m_parts.parts);
+  const size_t mine_first = mine_range.first, mine_last = mine_range.second;
   const std::vector<std::uint64_t> mine(unit_samples.begin() + static_cast<std::ptrdiff_t>(mine_first),
                                         unit_samples.begin() + static_cast<std::ptrdiff_t>(mine_last));
   std::vector<std::uint64_t> started(m_tracers.size(), 0);
