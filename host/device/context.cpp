@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "device/checked_transfers.h"
 #include "device/kernel_source.h"
 
 namespace prism {
@@ -49,7 +50,7 @@ Buffer::Buffer(Context& context, size_t bytes) : m_queue(context.queue()), m_byt
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {
   if (this != &other) {
-    if (m_mem) clReleaseMemObject(m_mem);
+    if (m_mem) releaseBuffer(m_mem);
     m_mem = std::exchange(other.m_mem, nullptr);
     m_queue = other.m_queue;
     m_bytes = std::exchange(other.m_bytes, 0);
@@ -58,11 +59,13 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
 }
 
 Buffer::~Buffer() {
-  if (m_mem) clReleaseMemObject(m_mem);  // cannot throw from a destructor; a failure here only leaks
+  if (m_mem) releaseBuffer(m_mem);  // cannot throw from a destructor; a failure here only leaks
 }
 
 void Buffer::write(const void* data, size_t bytes, size_t offset) {
   if (bytes == 0) return;
+  // A host write of part of a buffer would hide the rest from Oclgrind's checker.
+  if (checkedTransfers() && (offset != 0 || bytes != m_bytes)) return checkedWrite(m_queue, m_mem, offset, data, bytes);
   PRISM_CL_CHECK(clEnqueueWriteBuffer(m_queue, m_mem, CL_TRUE, offset, bytes, data, 0, nullptr, nullptr));
 }
 
@@ -71,40 +74,18 @@ void Buffer::read(void* data, size_t bytes, size_t offset) const {
   PRISM_CL_CHECK(clEnqueueReadBuffer(m_queue, m_mem, CL_TRUE, offset, bytes, data, 0, nullptr, nullptr));
 }
 
-namespace {
-
-// PRISM_HOST_TRANSFERS=1: fills and device-to-device copies go through the host
-// instead, for Oclgrind's uninitialised-value checker, which does not see
-// clEnqueueFillBuffer or clEnqueueCopyBuffer and would report every read of
-// what they wrote (tests/oclgrind/check.sh). Slow; for that check only.
-bool hostTransfers() {
-  static const bool on = [] {
-    const char* v = std::getenv("PRISM_HOST_TRANSFERS");
-    return v && std::string(v) == "1";
-  }();
-  return on;
-}
-
-}  // namespace
-
 void Buffer::copyTo(Buffer& to, size_t bytes, size_t offset, size_t to_offset) const {
   if (bytes == 0) return;
-  if (hostTransfers()) {
-    std::vector<unsigned char> staged(bytes);
-    read(staged.data(), bytes, offset);
-    to.write(staged.data(), bytes, to_offset);
-    return;
-  }
+  if (checkedTransfers()) return checkedCopy(m_queue, m_mem, offset, to.m_mem, to_offset, bytes);
   PRISM_CL_CHECK(clEnqueueCopyBuffer(m_queue, m_mem, to.m_mem, offset, to_offset, bytes, 0, nullptr, nullptr));
 }
 
 void Buffer::fill(const void* pattern, size_t pattern_bytes, size_t bytes) {
   if (bytes == 0) return;
-  if (hostTransfers()) {
+  if (checkedTransfers()) {
     std::vector<unsigned char> bytes_out(bytes);
     for (size_t i = 0; i < bytes; ++i) bytes_out[i] = static_cast<const unsigned char*>(pattern)[i % pattern_bytes];
-    PRISM_CL_CHECK(clEnqueueWriteBuffer(m_queue, m_mem, CL_TRUE, 0, bytes, bytes_out.data(), 0, nullptr, nullptr));
-    return;
+    return write(bytes_out.data(), bytes, 0);
   }
   PRISM_CL_CHECK(clEnqueueFillBuffer(m_queue, m_mem, pattern, pattern_bytes, 0, bytes, 0, nullptr, nullptr));
 }

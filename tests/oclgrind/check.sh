@@ -7,9 +7,10 @@
 #                                  -cl-opt-disable: Oclgrind 21.10's checker stops at
 #                                  the `freeze` instruction optimised builds contain
 #                                  (and at the noalias scopes forced inlining leaves,
-#                                  hence PRISM_NO_FORCED_INLINE); buffers are filled
-#                                  and copied through the host (PRISM_HOST_TRANSFERS),
-#                                  as it does not see clEnqueueFill/CopyBuffer.
+#                                  hence PRISM_NO_FORCED_INLINE); fills, copies and
+#                                  partial writes go through a copy kernel and no
+#                                  buffer is released (PRISM_HOST_TRANSFERS: the
+#                                  checker's blind spots, host/device/checked_transfers.h).
 # Each run has its own kernel cache, so the kernels are built under the options
 # given here and not taken from a PoCL build.
 set -euo pipefail
