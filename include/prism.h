@@ -127,16 +127,20 @@ PRISM_API PrismStatus prismSetProgressCallback(PrismContext context, PrismProgre
  * context on its own devices, gives it the same `parts` and its own `part`, and
  * calls prismRender with the same scene and options; each traces a contiguous
  * stretch of the frame's units, and part 0's prismRender returns the whole
- * image, AOVs and counts, bit for bit those of one process (the other parts'
- * image and AOVs hold zeros). The transport is the caller's: prismRender calls
- * `exchange` on every part in the same order, with this part's bytes; when
- * `to_all` is nonzero every part must receive every part's bytes, otherwise
- * part 0 alone does; `receive(receiver, part, data, size)` is called once for
- * each part whose bytes arrive here (this part's own included). It returns 0,
- * or nonzero when the transport failed (prismRender then fails with
- * PRISM_ERROR_UNKNOWN, and the other parts wait: end them, as MPI_Abort does).
- * The parts run one build of prism on machines of one byte order. A NULL
- * `parts` makes the context render alone again. */
+ * image, AOVs and counts, bit for bit those of one process on devices of the
+ * same kind (the other parts' image and AOVs hold zeros, primid -1). Every part
+ * first checks that all render the same frame (options, camera, mesh data);
+ * if not, prismRender fails on every part with PRISM_ERROR_INVALID_ARGUMENT.
+ * The transport is the caller's: prismRender calls `exchange` on every part in
+ * the same order, with this part's bytes; when `to_all` is nonzero every part
+ * must receive every part's bytes, otherwise part 0 alone does;
+ * `receive(receiver, part, data, size)` is called once for each part whose
+ * bytes arrive here (this part's own included). It returns 0, or nonzero when
+ * the transport failed (prismRender then fails with PRISM_ERROR_UNKNOWN). A
+ * part whose prismRender fails for any other reason (its device, a cancel)
+ * leaves the others waiting at their next exchange: end them, as `prism
+ * render` does with MPI_Abort. The parts run one build of prism on machines of
+ * one byte order. A NULL `parts` makes the context render alone again. */
 typedef void (*PrismReceiveFn)(void* receiver, uint32_t part, const void* data, uint64_t size);
 typedef int (*PrismExchangeFn)(void* user, int to_all, const void* data, uint64_t size, PrismReceiveFn receive,
                                void* receiver);

@@ -286,17 +286,26 @@ PRISM_API PrismStatus prismSetFrameParts(PrismContext context, const PrismFrameP
   if (f.shared()) {
     const PrismFrameParts c = *parts;
     f.exchange = [c](bool to_all, const Bytes& mine) {
-      std::vector<Bytes> got(c.parts);
+      struct Received {
+        std::vector<Bytes> parts;
+        bool out_of_memory = false;  // nothing may be thrown through the caller's C code
+      } got;
+      got.parts.resize(c.parts);
       const PrismReceiveFn receive = [](void* receiver, uint32_t part, const void* data, uint64_t size) {
-        auto& into = *static_cast<std::vector<Bytes>*>(receiver);
+        auto& into = *static_cast<Received*>(receiver);
         const auto* bytes = static_cast<const std::uint8_t*>(data);
-        if (part < into.size() && (bytes || size == 0)) into[part].assign(bytes, bytes + size);
+        try {
+          if (part < into.parts.size() && (bytes || size == 0)) into.parts[part].assign(bytes, bytes + size);
+        } catch (const std::bad_alloc&) {
+          into.out_of_memory = true;
+        }
       };
       const int rc = c.exchange(c.user, to_all ? 1 : 0, mine.data(), mine.size(), receive, &got);
       if (rc != 0)
         throw std::runtime_error("the frame parts' exchange failed (PrismFrameParts.exchange returned " +
                                  std::to_string(rc) + ")");
-      return got;
+      if (got.out_of_memory) throw std::bad_alloc();
+      return std::move(got.parts);
     };
   }
   context->parts = std::move(f);

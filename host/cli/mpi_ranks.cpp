@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -24,37 +25,39 @@ std::uint32_t launchedRanks() {
 
 #ifdef PRISM_WITH_MPI
 bool g_started = false;
+bool g_rendered = false;
 Ranks g_ranks;
+MPI_Comm g_comm = MPI_COMM_NULL;  // prism's own, so that its tags meet no one else's
 
 // MPI counts in int: large exchanges go in pieces.
 constexpr std::uint64_t kPiece = 1u << 30;
 
 void sendBytes(const void* data, std::uint64_t size, int to) {
-  MPI_Send(&size, 1, MPI_UINT64_T, to, 0, MPI_COMM_WORLD);
+  MPI_Send(&size, 1, MPI_UINT64_T, to, 0, g_comm);
   const auto* bytes = static_cast<const char*>(data);
   for (std::uint64_t at = 0; at < size; at += kPiece)
-    MPI_Send(bytes + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, to, 1, MPI_COMM_WORLD);
+    MPI_Send(bytes + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, to, 1, g_comm);
 }
 
 std::vector<char> receiveBytes(int from) {
   std::uint64_t size = 0;
-  MPI_Recv(&size, 1, MPI_UINT64_T, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  MPI_Recv(&size, 1, MPI_UINT64_T, from, 0, g_comm, MPI_STATUS_IGNORE);
   std::vector<char> bytes(size);
   for (std::uint64_t at = 0; at < size; at += kPiece)
-    MPI_Recv(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, from, 1, MPI_COMM_WORLD,
+    MPI_Recv(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, from, 1, g_comm,
              MPI_STATUS_IGNORE);
   return bytes;
 }
 
 void broadcastBytes(std::vector<char>& bytes, int root) {
   std::uint64_t size = bytes.size();
-  MPI_Bcast(&size, 1, MPI_UINT64_T, root, MPI_COMM_WORLD);
+  MPI_Bcast(&size, 1, MPI_UINT64_T, root, g_comm);
   bytes.resize(size);
   for (std::uint64_t at = 0; at < size; at += kPiece)
-    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, root, MPI_COMM_WORLD);
+    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, root, g_comm);
 }
 
-// PrismFrameParts.exchange over MPI_COMM_WORLD. MPI's own errors end the run
+// PrismFrameParts.exchange over prism's duplicate of MPI_COMM_WORLD. MPI's own errors end the run
 // (MPI_ERRORS_ARE_FATAL), so a return here is a success.
 int exchange(void*, int to_all, const void* data, std::uint64_t size, PrismReceiveFn receive, void* receiver) {
   const int rank = static_cast<int>(g_ranks.rank), ranks = static_cast<int>(g_ranks.size);
@@ -85,19 +88,30 @@ int exchange(void*, int to_all, const void* data, std::uint64_t size, PrismRecei
 #ifdef PRISM_WITH_MPI
 Ranks startRanks() {
   if (g_started || launchedRanks() == 0) return g_ranks;
-  MPI_Init(nullptr, nullptr);
+  // Only this thread calls MPI; the devices' threads and PoCL's do not.
+  int provided = MPI_THREAD_SINGLE;
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   g_started = true;
+  if (provided < MPI_THREAD_FUNNELED) {
+    MPI_Finalize();
+    g_started = false;
+    throw std::runtime_error("MPI offers no threads beside its calls (MPI_THREAD_FUNNELED), which prism needs");
+  }
+  MPI_Comm_dup(MPI_COMM_WORLD, &g_comm);
   int rank = 0, size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  MPI_Comm_rank(g_comm, &rank);
+  MPI_Comm_size(g_comm, &size);
   g_ranks.rank = static_cast<std::uint32_t>(rank);
   g_ranks.size = static_cast<std::uint32_t>(size);
   return g_ranks;
 }
 
+void frameRendered() { g_rendered = true; }
+
 int endRanks(int code) {
   if (!g_started) return code;
-  if (code != 0 && g_ranks.shared()) MPI_Abort(MPI_COMM_WORLD, code);
+  if (code != 0 && g_ranks.shared() && !g_rendered) MPI_Abort(MPI_COMM_WORLD, code);
+  MPI_Comm_free(&g_comm);
   MPI_Finalize();
   g_started = false;
   return code;
@@ -110,6 +124,8 @@ Ranks startRanks() {
                      "install libopenmpi-dev), so each would render the whole frame; run it alone");
   return Ranks{};
 }
+
+void frameRendered() {}
 
 int endRanks(int code) { return code; }
 #endif

@@ -23,8 +23,12 @@ struct Ranks {
 Ranks startRanks();
 // The frame parts for prismSetFrameParts (one part alone).
 PrismFrameParts frameParts(const Ranks& ranks);
-// Ends MPI: with several ranks a failure (exit code not 0) ends every rank
-// (MPI_Abort), since the others would wait for this one forever. Returns `code`.
+// Says the shared frame is rendered: the ranks wait for each other no more.
+void frameRendered();
+// Ends MPI. With several ranks, a failure (exit code not 0) before the frame was
+// rendered ends every rank (MPI_Abort), since the others would wait for this one
+// forever; after it (rank 0's --check-nan finding, a write that fails) the code
+// is returned as it is. Returns `code`.
 int endRanks(int code);
 
 }  // namespace prism_cli

@@ -318,13 +318,15 @@ int runRender(const std::vector<std::string>& args) {
     return kExitOk;
   }
   const Ranks ranks = startRanks();
-  if (!outputFolderExists(request.output_path)) {
+  // Under mpirun, rank 0 alone writes and speaks; the others render their part.
+  const bool speaks = ranks.rank == 0;
+  if (speaks && !outputFolderExists(request.output_path)) {
     printError("cannot write '" + request.output_path + "': folder '" +
                std::filesystem::path(request.output_path).parent_path().string() + "' does not exist");
     return kExitFailure;
   }
   const std::string ext = lowerExtension(request.output_path);
-  if (request.aov && ext == ".hdr" && (*request.aov == PRISM_AOV_DEPTH || *request.aov == PRISM_AOV_PRIMID)) {
+  if (speaks && request.aov && ext == ".hdr" && (*request.aov == PRISM_AOV_DEPTH || *request.aov == PRISM_AOV_PRIMID)) {
     printWarning("'" + request.output_path + "': .hdr stores no +inf or negative values, so misses will not " +
                  "read back as +inf (depth) or -1 (primid); .exr keeps them");
   }
@@ -349,7 +351,7 @@ int runRender(const std::vector<std::string>& args) {
                                       : prismLoadMeshAsScene(request.scene_path.c_str(), &raw_scene);
   if (loaded != PRISM_OK) return failWithLastError();
   const SceneHandle scene(raw_scene);
-  printSceneWarnings(scene.get());
+  if (speaks) printSceneWarnings(scene.get());
 
   PrismRenderOptions options{};
   options.struct_size = sizeof options;
@@ -384,7 +386,7 @@ int runRender(const std::vector<std::string>& args) {
   PrismStatus status;
   {
     const InterruptGuard interrupt;
-    ProgressBar bar(!request.quiet && ranks.rank == 0 && stderrIsTerminal());
+    ProgressBar bar(!request.quiet && speaks && stderrIsTerminal());
     if (prismSetProgressCallback(context.get(), onProgress, &bar) != PRISM_OK) return failWithLastError();
     status = prismRender(context.get(), scene.get(), &options, rgba.data(), &stats);
     prismSetProgressCallback(context.get(), nullptr, nullptr);
@@ -395,7 +397,8 @@ int runRender(const std::vector<std::string>& args) {
     }
   }
   if (status != PRISM_OK) return failWithLastError();
-  if (ranks.rank != 0) return kExitOk;
+  frameRendered();
+  if (!speaks) return kExitOk;
   uint32_t warnings = 0;
   prismGetRenderWarningCount(context.get(), &warnings);
   for (uint32_t i = 0; i < warnings; ++i) {

@@ -32,6 +32,49 @@ void ByteReader::getRaw(void* data, std::size_t size) {
   m_at += size;
 }
 
+void ByteReader::expectDone() const {
+  if (!done())
+    throw std::runtime_error("frame parts: a part sent more bytes than expected (different builds of prism, "
+                             "or a different scene or options on another part?)");
+}
+
+std::uint64_t frameFingerprint(const GpuScene& scene, const RenderOptions& options, FirstHitMode first_hit,
+                               ShadowMode shadows, AccelKind accel) {
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto add = [&hash](const void* data, std::size_t size) {
+    const auto* p = static_cast<const std::uint8_t*>(data);
+    for (std::size_t i = 0; i < size; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
+  };
+  const auto value = [&add](auto v) { add(&v, sizeof v); };
+  value(std::int64_t{options.width});
+  value(std::int64_t{options.height});
+  value(std::int64_t{options.spp});
+  value(std::int64_t{options.max_depth});
+  value(options.min_weight);
+  value(options.seed);
+  value(static_cast<std::int64_t>(options.aaMode()));
+  value(static_cast<std::int64_t>(options.filter));
+  value(options.aa_threshold);
+  value(std::int64_t{options.aa_max_level});
+  value(static_cast<std::int64_t>(options.inside_test));
+  value(static_cast<std::int64_t>(options.bounds));
+  value(static_cast<std::int64_t>(first_hit));
+  value(static_cast<std::int64_t>(shadows));
+  value(static_cast<std::int64_t>(accel));
+  value(std::int64_t{options.check_nan});
+  add(&scene.camera, sizeof scene.camera);  // every field 4 bytes, the padding explicit and zero
+  add(scene.ambient, sizeof scene.ambient);
+  add(scene.background, sizeof scene.background);
+  value(std::uint64_t{scene.objects.size()});
+  value(std::uint64_t{scene.primitive_count});
+  value(std::uint64_t{scene.materials.size()});
+  value(std::uint64_t{scene.lights.size()});
+  value(std::uint64_t{scene.texels.size()});
+  add(scene.triangles.data(), scene.triangles.size() * sizeof(std::uint32_t));
+  add(scene.mesh_data.data(), scene.mesh_data.size() * sizeof(float));
+  return hash;
+}
+
 std::string ByteReader::getString() {
   const auto n = get<std::uint64_t>();
   std::string s(n <= m_bytes.size() - m_at ? static_cast<std::size_t>(n) : 0, '\0');

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "render/gpu_scene.h"
+#include "render/render_options.h"
 #include "render/render_stats.h"
 
 namespace prism {
@@ -62,6 +64,8 @@ class ByteReader {
   void getArray(T* values, std::size_t n) { getRaw(values, n * sizeof(T)); }
   std::string getString();
   bool done() const { return m_at == m_bytes.size(); }
+  // Throws std::runtime_error unless every byte was read: another part sent more.
+  void expectDone() const;
 
  private:
   // Throws std::runtime_error past the end: another part sent something else.
@@ -69,6 +73,12 @@ class ByteReader {
   const Bytes& m_bytes;
   std::size_t m_at = 0;
 };
+
+// What must be the same on every part for their units to make one frame: the
+// options, the choices made from them, the camera, the mesh data and the counts
+// of objects, materials and lights, hashed (FNV-1a, 64 bits).
+std::uint64_t frameFingerprint(const GpuScene& scene, const RenderOptions& options, FirstHitMode first_hit,
+                               ShadowMode shadows, AccelKind accel);
 
 // The counts of a run of units (rays, waves, film trips, the NaN finding).
 void packUnitCounts(ByteWriter& out, const RenderStats* counts, std::size_t n);

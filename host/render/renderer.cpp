@@ -72,6 +72,8 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   result.stats.shadows = planShadows(options.shadows, accel->kind, gpu.objects, gpu.lights, &light_buffer);
   if (result.stats.shadows == ShadowMode::LightBuffer) result.stats.light_buffer_candidates = light_buffer.mean_candidates;
 
+  if (m_parts.shared()) checkSameFrame(frameFingerprint(gpu, options, first_hit, result.stats.shadows, accel->kind));
+
   FrameSetup frame;
   frame.scene = &gpu;
   frame.accel = accel.get();
@@ -124,6 +126,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
       for (std::uint32_t p = 1; p < m_parts.parts; ++p) {
         ByteReader in(got.at(p));
         unpackShares(in, p, stats);
+        in.expectDone();
       }
     }
   }
@@ -184,7 +187,24 @@ void Renderer::gatherAovs(RenderResult& result) {
     in.getArray(normal.data(), 3 * pixels);
     in.getArray(primid.data(), pixels);
     in.getArray(albedo.data(), 3 * pixels);
+    in.expectDone();
     merge(depth.data(), normal.data(), primid.data(), albedo.data());
+  }
+}
+
+void Renderer::checkSameFrame(std::uint64_t fingerprint) {
+  ByteWriter out;
+  out.put(fingerprint);
+  // Every part sees every fingerprint, so all of them stop alike.
+  const std::vector<Bytes> got = m_parts.exchange(true, out.take());
+  for (std::uint32_t p = 0; p < m_parts.parts; ++p) {
+    ByteReader in(got.at(p));
+    const auto theirs = in.get<std::uint64_t>();
+    in.expectDone();
+    if (theirs != fingerprint)
+      throw std::invalid_argument("frame parts: part " + std::to_string(p) + " of " + std::to_string(m_parts.parts) +
+                                  " renders a different frame (scene, options or mesh data) from part " +
+                                  std::to_string(m_parts.part) + ": every part must render the same");
   }
 }
 
@@ -247,6 +267,7 @@ std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_sample
       const auto [first, last] = partUnits(unit_samples.size(), p, m_parts.parts);
       ByteReader in(got.at(p));
       unpackUnitCounts(in, counts.data() + first, last - first);
+      in.expectDone();
     }
   }
   // In unit order: the first non-finite contribution is the first unit's that
@@ -319,6 +340,7 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
         in.getArray(xy.data(), 2 * n);
         m_tracers[resolver]->writeSamples(u * unit_size, n, rgba.data(), xy.data());
       }
+      in.expectDone();
     }
   }
   result.rgba = m_tracers[resolver]->resolvePixels();
@@ -382,6 +404,7 @@ void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptio
         const auto [plo, phi] = positions(p);
         ByteReader in(got.at(p));
         in.getArray(rgba.data() + 4 * plo, 4 * (phi - plo));
+        in.expectDone();
       }
     }
     ++pass;

@@ -107,6 +107,8 @@ class Renderer {
   static constexpr size_t kElsewhere = ~size_t{0};
   // Units of slices (with several devices, or parts) rather than one unit a pass.
   bool unitsOfSlices() const { return m_tracers.size() > 1 || m_parts.shared(); }
+  // Throws on every part unless every part renders the same frame.
+  void checkSameFrame(std::uint64_t fingerprint);
   // The AOVs: each pixel from the device (and the part) whose sample wrote it.
   void gatherAovs(RenderResult& result);
   // The first device that did not fail this frame.

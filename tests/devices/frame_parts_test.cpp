@@ -9,7 +9,9 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstring>
+#include <functional>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -31,13 +33,16 @@ class Loopback {
 
   std::vector<Bytes> exchange(std::uint32_t part, bool to_all, const Bytes& mine) {
     std::unique_lock<std::mutex> lock(m_mutex);
-    m_changed.wait(lock, [&] { return !m_reading; });
+    m_changed.wait(lock, [&] { return !m_reading || m_aborted; });
+    if (m_aborted) throw std::runtime_error("another part failed");
     m_bytes[part] = mine;
     if (++m_arrived == m_parts) {
       m_reading = true;
       m_changed.notify_all();
     } else {
-      m_changed.wait(lock, [&] { return m_reading; });
+      m_changed.wait(lock, [&] { return m_reading || m_aborted; });
+      // A round every part reached is delivered, whatever happened since.
+      if (!m_reading) throw std::runtime_error("another part failed");
     }
     std::vector<Bytes> got;
     if (to_all || part == 0) got = m_bytes;
@@ -51,6 +56,13 @@ class Loopback {
     return got;
   }
 
+  // A part that fails wakes the others, which fail too instead of waiting.
+  void abort() {
+    const std::lock_guard<std::mutex> lock(m_mutex);
+    m_aborted = true;
+    m_changed.notify_all();
+  }
+
   std::uint64_t rounds_seen = 0;
 
  private:
@@ -58,13 +70,20 @@ class Loopback {
   std::vector<Bytes> m_bytes;
   std::uint32_t m_arrived = 0, m_bytes_read_count = 0;
   bool m_reading = false;
+  bool m_aborted = false;
   std::mutex m_mutex;
   std::condition_variable m_changed;
 };
 
-// Renders `scene` split into parts, part p on the devices parts_devices[p].
-std::vector<RenderResult> renderInParts(const std::vector<std::vector<Context*>>& parts_devices, const Scene& scene,
-                                        const RenderOptions& options) {
+struct PartsOutcome {
+  std::vector<RenderResult> results;
+  std::vector<std::string> errors;  // per part, empty when it rendered
+};
+
+// Renders `scene` split into parts, part p on the devices parts_devices[p]
+// with options_of(p).
+PartsOutcome tryInParts(const std::vector<std::vector<Context*>>& parts_devices, const Scene& scene,
+                        const std::function<RenderOptions(std::uint32_t part)>& options_of) {
   const auto parts = static_cast<std::uint32_t>(parts_devices.size());
   Loopback loopback(parts);
   std::vector<RenderResult> results(parts);
@@ -79,15 +98,22 @@ std::vector<RenderResult> renderInParts(const std::vector<std::vector<Context*>>
         fp.parts = parts;
         fp.exchange = [&loopback, p](bool to_all, const Bytes& mine) { return loopback.exchange(p, to_all, mine); };
         renderer.setFrameParts(fp);
-        results[p] = renderer.render(scene, options);
+        results[p] = renderer.render(scene, options_of(p));
       } catch (const std::exception& e) {
         errors[p] = e.what();
+        loopback.abort();
       }
     });
   }
   for (std::thread& t : threads) t.join();
-  for (const std::string& e : errors) REQUIRE(e.empty());
-  return results;
+  return {std::move(results), std::move(errors)};
+}
+
+std::vector<RenderResult> renderInParts(const std::vector<std::vector<Context*>>& parts_devices, const Scene& scene,
+                                        const RenderOptions& options) {
+  PartsOutcome outcome = tryInParts(parts_devices, scene, [&](std::uint32_t) { return options; });
+  for (const std::string& e : outcome.errors) REQUIRE(e.empty());
+  return std::move(outcome.results);
 }
 
 bool allZero(const std::vector<float>& v) {
@@ -164,6 +190,21 @@ TEST_CASE("check-nan across parts finds the first non-finite contribution in ren
   CHECK(std::memcmp(&*parts[0].stats.nan, &*reference.stats.nan, sizeof(NanFinding)) == 0);
   const std::uint64_t units = (reference.stats.rays_by_kind[0] + Renderer::kSliceRays - 1) / Renderer::kSliceRays;
   CHECK(reference.stats.nan->sample >= partUnits(units, 1, 3).first * Renderer::kSliceRays);
+}
+
+TEST_CASE("parts that would render different frames are refused on every part, before any tracing") {
+  const std::vector<Context*> all = poclDevices();
+  REQUIRE(all.size() >= 3);
+  const Scene scene = loadSceneFile(std::string(PRISM_SOURCE_DIR "/scenes/whitted.json"));
+  const RenderOptions o = optionsFor(scene, kCases[0]);
+  // Part 2 asks for twice the samples: its units would be other samples.
+  const PartsOutcome outcome = tryInParts({{all[0]}, {all[1]}, {all[2]}}, scene, [&](std::uint32_t part) {
+    RenderOptions mine = o;
+    if (part == 2) mine.spp = 2 * o.spp;
+    return mine;
+  });
+  for (const std::string& e : outcome.errors) CHECK(e.find("renders a different frame") != std::string::npos);
+  CHECK(outcome.errors[0].find("part 2 of 3") != std::string::npos);
 }
 
 TEST_CASE("frame parts are checked") {

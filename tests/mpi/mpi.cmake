@@ -2,8 +2,9 @@
 # writes it, the same bits as one process (PFM, whose bytes are the pixels) for
 # the colour image and the AOVs, with 2 and 3 ranks, in the sampling modes that
 # split differently (a sample sequence, adaptive passes, the Z-buffer's batch),
-# and with several devices in each rank; rank 0 alone reports; a rank that fails
-# ends the run with an error instead of leaving the others waiting.
+# and with several devices in each rank; rank 0 alone reports; ranks started
+# with different options are refused; a rank that fails ends the run with an
+# error instead of leaving the others waiting.
 # Run as: cmake -DPRISM=<exe> -DMPIEXEC=<mpirun> -DSOURCE_DIR=<repo> -DWORK_DIR=<scratch> -P mpi.cmake
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -76,6 +77,15 @@ same(one_adaptive three_adaptive)
 render(1 one_zbuffer --width 160 --height 120 --aa jitter --spp 2 --first-hit zbuffer --quiet)
 render(2 two_zbuffer --width 160 --height 120 --aa jitter --spp 2 --first-hit zbuffer --device 0 --quiet)
 same(one_zbuffer two_zbuffer)
+
+# Ranks asked for different frames: refused on every rank before any tracing,
+# not a wrong image.
+run(${MPIEXEC} --oversubscribe -np 1 ${PRISM} render "${scene}" -o "${WORK_DIR}/mixed.pfm" --width 32 --height 24
+    --spp 4 --device 0 : -np 1 ${PRISM} render "${scene}" -o "${WORK_DIR}/mixed.pfm" --width 32 --height 24 --spp 8
+    --device 0)
+if(rc EQUAL 0 OR NOT err MATCHES "renders a different frame" OR EXISTS "${WORK_DIR}/mixed.pfm")
+  message(FATAL_ERROR "ranks with different options must be refused, nothing written (exit ${rc}):\n${out}${err}")
+endif()
 
 # Rank 1 cannot open its device: the run ends with its error, none waits.
 run(${MPIEXEC} --oversubscribe -np 1 ${PRISM} render "${scene}" -o "${WORK_DIR}/fail.pfm" --width 32 --height 24
