@@ -93,7 +93,8 @@ int mpiMain(const std::vector<std::string>& args) {
                                std::to_string(width) + " --height " + std::to_string(height) +
                                " --aa jitter --spp " + std::to_string(spp) + " --device " + shellQuote(device);
     // Root may start ranks here (benchmark machines often run as root).
-    const std::string mpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
+    const std::string mpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+                               "OMPI_MCA_btl_vader_single_copy_mechanism=none " +
                                shellQuote(PRISM_MPIEXEC) + " --oversubscribe -np ";
     std::vector<int> counts{1};
     counts.insert(counts.end(), ranks.begin(), ranks.end());
