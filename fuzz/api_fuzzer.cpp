@@ -241,6 +241,17 @@ void step(Reader& in, PrismScene (&scenes)[3]) {
       const char* device = nullptr;
       if (checked(prismGetSceneDevice(scene, &device), "prismGetSceneDevice") == PRISM_OK && !device)
         broken("no selector string (even an empty one) for a scene", "prismGetSceneDevice");
+      // An animation's frames (the scene text may carry an "animation" block).
+      if (checked(prismGetFrameCount(scene, &count), "prismGetFrameCount") == PRISM_OK) {
+        PrismScene frame = nullptr;
+        const std::uint32_t index = in.byte() % 2 ? count - 1 : in.u32() % (count + 1);
+        if (checked(prismGetFrameScene(scene, index, &frame), "prismGetFrameScene") == PRISM_OK) {
+          std::uint32_t frames = 0;
+          if (!frame || index >= count || prismGetFrameCount(frame, &frames) != PRISM_OK || frames != 1)
+            broken("a frame past the count, or not a scene of one frame", "prismGetFrameScene");
+        }
+        prismReleaseScene(frame);
+      }
       if (checked(prismGetSceneWarningCount(scene, &count), "prismGetSceneWarningCount") == PRISM_OK) {
         const char* message = nullptr;
         const std::uint32_t index = in.byte() % 2 ? count : in.u32() % (count + 2);

@@ -167,6 +167,13 @@ PRISM_API PrismStatus prismGetSceneDevice(PrismScene scene, const char** selecto
 /* Warnings found while loading (unknown keys and the like), one per index. */
 PRISM_API PrismStatus prismGetSceneWarningCount(PrismScene scene, uint32_t* count);
 PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, const char** message);
+/* An animation (the scene format's "animation": frames whose shutters follow
+ * one another by a step, the scene's motion spanning all of them): how many
+ * frames it has (1 for a still), and frame `frame` (0-based) as a scene of its
+ * own, released with prismReleaseScene, which renders as any scene does.
+ * prismRender given the animation itself renders its frame 0. */
+PRISM_API PrismStatus prismGetFrameCount(PrismScene scene, uint32_t* count);
+PRISM_API PrismStatus prismGetFrameScene(PrismScene scene, uint32_t frame, PrismScene* out_scene);
 /* The scene's objects so far (the index the next object added will get). */
 PRISM_API PrismStatus prismGetSceneObjectCount(PrismScene scene, uint32_t* count);
 

@@ -11,6 +11,7 @@
 #include "api/api_render.h"
 #include "device/device_list.h"
 #include "render/image_writer.h"
+#include "scene/animation.h"
 #include "scene/scene_loader.h"
 
 using namespace prism;
@@ -125,6 +126,9 @@ RenderResult renderScene(PrismContext context, PrismScene scene, const PrismRend
   context->renderer->setFrameParts(context->parts);
   ProgressFn progress;
   if (context->progress) progress = [context](double f) { return context->progress(context->progress_user, f) == 0; };
+  // An animation renders its first frame here; prismGetFrameScene gives the others.
+  if (scene->scene.animation.frames > 1)
+    return context->renderer->render(sceneAtFrame(scene->scene, 0), opts, progress);
   return context->renderer->render(scene->scene, opts, progress);  // FilmTooLarge: guarded() says OUT_OF_MEMORY
 }
 
@@ -338,6 +342,24 @@ PRISM_API PrismStatus prismGetSceneDevice(PrismScene scene, const char** selecto
   PRISM_REQUIRE(scene && selector, "prismGetSceneDevice: NULL argument");
   *selector = scene->scene.render.device.c_str();
   return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetFrameCount(PrismScene scene, uint32_t* count) {
+  PRISM_REQUIRE(scene && count, "prismGetFrameCount: NULL argument");
+  *count = static_cast<uint32_t>(scene->scene.animation.frames);
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetFrameScene(PrismScene scene, uint32_t frame, PrismScene* out_scene) {
+  PRISM_REQUIRE(out_scene, "prismGetFrameScene: out_scene is NULL");
+  *out_scene = nullptr;
+  PRISM_REQUIRE(scene, "prismGetFrameScene: scene is NULL");
+  return guarded(__func__, [&] {
+    if (frame >= static_cast<uint32_t>(scene->scene.animation.frames))
+      throw std::invalid_argument("frame " + std::to_string(frame) + " is not in the animation (frames 0 to " +
+                                  std::to_string(scene->scene.animation.frames - 1) + ")");
+    return loadInto(sceneAtFrame(scene->scene, static_cast<int>(frame)), out_scene);
+  });
 }
 
 PRISM_API PrismStatus prismGetSceneObjectCount(PrismScene scene, uint32_t* count) {

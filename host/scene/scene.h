@@ -138,9 +138,17 @@ struct Object {
   }
 };
 
+// A sequence of frames (scene/animation.h): frame k's shutter is the camera's
+// moved by k x step; the scene's motion spans all of them.
+struct Animation {
+  int frames = 1;
+  double step = 1;
+};
+
 struct Scene {
   std::string source;  // file path or the name given to the loader
   Camera camera;
+  Animation animation;
   Film film;
   RenderSettings render;
   std::vector<Material> materials;  // index 0 is always present (the default material)

@@ -16,6 +16,7 @@
 #include "mesh/mesh_cache.h"
 #include "mesh/mesh_error.h"
 #include "scene/sampling_options.h"
+#include "scene/animation.h"
 #include "scene/camera_check.h"
 #include "scene/json_reader.h"
 #include "scene/light_check.h"
@@ -58,8 +59,8 @@ class SceneParser : private JsonReader {
     const Json& root = parsed.root;
     m_material_order = &parsed.material_order;
     if (!root.is_object()) fail("", "expected a JSON object at top level, got " + describe(root));
-    static const std::vector<std::string> kTop = {"camera",    "film",   "render",
-                                                  "materials", "lights", "objects"};
+    static const std::vector<std::string> kTop = {"camera",    "film",   "render",   "materials",
+                                                  "lights",    "objects", "animation"};
     for (auto it = root.begin(); it != root.end(); ++it) {
       bool known = false;
       for (const std::string& k : kTop) known = known || it.key() == k;
@@ -74,6 +75,7 @@ class SceneParser : private JsonReader {
     if (const Json* v = find(root, "materials")) parseMaterials(*v, "materials");
     if (const Json* v = find(root, "lights")) parseLights(*v, "lights");
     if (const Json* v = find(root, "objects")) parseObjects(*v, "objects");
+    if (const Json* v = find(root, "animation")) parseAnimation(*v, "animation");
   }
 
  private:
@@ -127,6 +129,18 @@ class SceneParser : private JsonReader {
       c.look_at_end = le ? vec3(*le, member(path, "look_at_end")) : c.look_at;
     }
     const std::string problem = cameraProblem(c);
+    if (!problem.empty()) fail(path, problem);
+  }
+
+  // After the camera: the frames' shutters follow from its own.
+  void parseAnimation(const Json& v, const std::string& path) {
+    checkObject(v, path, {"frames", "step"});
+    Animation& a = m_scene.animation;
+    if (const Json* p = find(v, "frames"))
+      a.frames = int(integer(*p, member(path, "frames"), 1, kMaxAnimationFrames));
+    if (const Json* p = find(v, "step"))
+      a.step = number(*p, member(path, "step"), "a time > 0", [](double x) { return x > 0; });
+    const std::string problem = animationProblem(m_scene);
     if (!problem.empty()) fail(path, problem);
   }
 
@@ -676,12 +690,13 @@ namespace {
 class SceneRollback {
  public:
   explicit SceneRollback(Scene& scene)
-      : m_scene(scene), m_camera(scene.camera), m_film(scene.film), m_render(scene.render),
+      : m_scene(scene), m_camera(scene.camera), m_animation(scene.animation), m_film(scene.film), m_render(scene.render),
         m_default_material(scene.materials.at(0)), m_materials(scene.materials.size()),
         m_lights(scene.lights.size()), m_objects(scene.objects.size()), m_warnings(scene.warnings.size()) {}
   ~SceneRollback() {
     if (m_committed) return;
     m_scene.camera = m_camera;
+    m_scene.animation = m_animation;
     m_scene.film = m_film;
     m_scene.render = m_render;
     m_scene.materials.resize(m_materials);
@@ -695,6 +710,7 @@ class SceneRollback {
  private:
   Scene& m_scene;
   Camera m_camera;
+  Animation m_animation;
   Film m_film;
   RenderSettings m_render;
   Material m_default_material;

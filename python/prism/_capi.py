@@ -112,6 +112,8 @@ _FUNCTIONS = {
     "prismReleaseScene": (None, [c_void_p]),
     "prismGetSceneWarningCount": (Status, [c_void_p, POINTER(c_uint32)]),
     "prismGetSceneObjectCount": (Status, [c_void_p, POINTER(c_uint32)]),
+    "prismGetFrameCount": (Status, [c_void_p, POINTER(c_uint32)]),
+    "prismGetFrameScene": (Status, [c_void_p, c_uint32, POINTER(c_void_p)]),
     "prismGetSceneDevice": (Status, [c_void_p, POINTER(c_char_p)]),
     "prismGetSceneWarning": (Status, [c_void_p, c_uint32, POINTER(c_char_p)]),
     "prismGetCamera": (Status, [c_void_p, POINTER(Camera)]),

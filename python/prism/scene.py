@@ -83,6 +83,23 @@ class Scene:
         return text.value.decode() if text.value else None
 
     @property
+    def frame_count(self):
+        """The frames of the scene's animation (its "animation" block); 1 for a still."""
+        count = ctypes.c_uint32()
+        check(lib.prismGetFrameCount(self._handle, ctypes.byref(count)))
+        return count.value
+
+    def frame(self, index):
+        """Frame `index` (from 0) of the animation as a scene of its own: the
+        shutter moved by index x step, the moving objects and camera placed on
+        their path for it. Render it as any scene."""
+        if not isinstance(index, int) or isinstance(index, bool) or index < 0:
+            raise ValueError("frame: expected a frame number >= 0, got %r" % (index,))
+        handle = ctypes.c_void_p()
+        check(lib.prismGetFrameScene(self._handle, min(index, 0xFFFFFFFF), ctypes.byref(handle)))
+        return Scene(handle)
+
+    @property
     def object_count(self):
         """The objects so far: the index the next object added gets."""
         count = ctypes.c_uint32()

@@ -274,3 +274,28 @@ def test_the_one_liner_renders_on_the_scene_s_devices_unless_told_otherwise():
         prism.render(scene, width=8, height=6)
     image = prism.render(scene, device="0", width=8, height=6)
     assert image.shape == (6, 8, 4)
+
+
+def test_animation_frames_render_as_the_scenes_written_for_them(ctx):
+    # A sphere from x = -2 to x = 2 over 5 still frames: frame k is the scene
+    # with the sphere at -2 + k, bit for bit (values exact in binary).
+    def scene(x0, x1=None, frames=None):
+        sphere = {"type": "sphere", "center": [0, 0, 0], "radius": 0.75, "transform": {"translate": [x0, 0, 0]}}
+        if x1 is not None:
+            sphere["transform_end"] = {"translate": [x1, 0, 0]}
+        d = {"camera": {"position": [0, 0, 8], "look_at": [0, 0, 0]}, "film": {"width": 32, "height": 24},
+             "lights": [{"position": [3, 5, 6]}], "objects": [sphere]}
+        if frames:
+            d["animation"] = {"frames": frames}
+        return prism.Scene.from_json(d)
+
+    animated = scene(-2, 2, frames=5)
+    assert animated.frame_count == 5 and scene(0).frame_count == 1
+    for k in (0, 3):
+        frame = animated.frame(k)
+        assert frame.frame_count == 1
+        assert np.array_equal(ctx.render(frame).rgba, ctx.render(scene(-2 + k)).rgba)
+    with pytest.raises(prism.Error, match="frame 5 is not in the animation"):
+        animated.frame(5)
+    with pytest.raises(ValueError):
+        animated.frame(-1)

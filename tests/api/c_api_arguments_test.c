@@ -133,6 +133,47 @@ int main(int argc, char** argv) {
   BAD(prismGetSceneDevice(scene, NULL), "prismGetSceneDevice");
   CHECK_OK(prismGetSceneDevice(scene, &text));
   CHECK(text && text[0] == 0); /* the example scene names no device */
+  /* Animations: a still has one frame, its own. */
+  BAD(prismGetFrameCount(NULL, &count), "prismGetFrameCount");
+  BAD(prismGetFrameCount(scene, NULL), "prismGetFrameCount");
+  CHECK_OK(prismGetFrameCount(scene, &count));
+  CHECK(count == 1);
+  {
+    PrismScene frame = (PrismScene)1, animated = NULL;
+    PrismCamera camera;
+    BAD(prismGetFrameScene(NULL, 0, &frame), "prismGetFrameScene");
+    CHECK(frame == NULL);
+    BAD(prismGetFrameScene(scene, 0, NULL), "prismGetFrameScene");
+    BAD(prismGetFrameScene(scene, 1, &frame), "prismGetFrameScene");
+    CHECK(frame == NULL && strstr(prismGetLastError(), "frame 1 is not in the animation (frames 0 to 0)"));
+    CHECK_OK(prismGetFrameScene(scene, 0, &frame));
+    prismReleaseScene(frame);
+    /* Three frames 2 apart: frame 2's shutter is the first moved by 4. */
+    CHECK_OK(prismNewScene(&animated));
+    CHECK_OK(prismAddSceneJson(animated, "{\"camera\": {\"shutter\": [0, 1]}, "
+                                         "\"animation\": {\"frames\": 3, \"step\": 2}}"));
+    CHECK_OK(prismGetFrameCount(animated, &count));
+    CHECK(count == 3);
+    CHECK_OK(prismGetFrameScene(animated, 2, &frame));
+    memset(&camera, 0, sizeof camera);
+    camera.struct_size = sizeof camera;
+    CHECK_OK(prismGetCamera(frame, &camera));
+    CHECK(camera.shutter_open == 4.0f && camera.shutter_close == 5.0f);
+    CHECK_OK(prismGetFrameCount(frame, &count));
+    CHECK(count == 1);
+    prismReleaseScene(frame);
+    frame = NULL;
+    /* The same check as the format's, when a camera set later moves the last
+       frame's shutter out of range. */
+    CHECK_OK(prismAddSceneJson(animated, "{\"animation\": {\"frames\": 3, \"step\": 4e14}}"));
+    camera.shutter_open = 3e14f;
+    camera.shutter_close = 3e14f;
+    CHECK_OK(prismSetCamera(animated, &camera));
+    BAD(prismGetFrameScene(animated, 0, &frame), "prismGetFrameScene");
+    CHECK(frame == NULL && strstr(prismGetLastError(), "the last frame's shutter"));
+    EXPECT(prismAddSceneJson(animated, "{\"animation\": {\"frames\": 0}}"), PRISM_ERROR_PARSE, "prismAddSceneJson");
+    prismReleaseScene(animated);
+  }
   BAD(prismGetSceneWarningCount(NULL, &count), "prismGetSceneWarningCount");
   BAD(prismGetSceneWarningCount(scene, NULL), "prismGetSceneWarningCount");
   CHECK_OK(prismGetSceneWarningCount(scene, &count));

@@ -388,7 +388,7 @@ TEST_CASE("unknown keys are warnings that name the JSON path", "[scene][warnings
   })",
                              "w.json");
   const std::vector<std::string> expected = {
-      "w.json: unknown key 'objcts' at top level (known: camera, film, render, materials, lights, objects)",
+      "w.json: unknown key 'objcts' at top level (known: camera, film, render, materials, lights, objects, animation)",
       "w.json: camera: unknown key 'fov_deg' (ignored)",
       "w.json: materials.glass: unknown key 'refract' (ignored)",
       "w.json: materials.glass.texture: unknown key 'size' (ignored)",
