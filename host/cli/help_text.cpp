@@ -165,6 +165,14 @@ Device:
   --no-cache        compile the kernels afresh, without reading or filling the kernel
                     cache (see PRISM_CACHE_DIR in 'prism --help')
 
+Animation (a scene with an "animation" block of frames):
+  --frames K|A-B    render only frame K, or frames A to B (from 0); default: all.
+                    Each frame is its own file: a run of '#' in -o becomes the
+                    frame number (-o shot_###.png: shot_007.png), else _NNNN goes
+                    before the extension (-o shot.png: shot_0007.png). Under
+                    mpirun the frames are dealt whole to the ranks, each writing
+                    its own
+
 Messages:
   --stats           after the summary, where the render's time went: set-up (kernels,
                     structure) and tracing, and each kernel's device time (profiled);
@@ -194,6 +202,7 @@ Examples:
   prism render scenes/whitted.json -o normals.png --aov normal
   prism render scenes/whitted.json -o high.png --camera-pos 0,6,9 --fov 35
   prism render scenes/whitted.json -o out.png --device 1 --no-cache
+  prism render scenes/animation.json -o frames/ball_##.png --frames 0-5
 
 Exit codes: 0 success; 1 failure (scene, device or file); 2 bad command line;
 130 interrupted. More: docs/cli.md.

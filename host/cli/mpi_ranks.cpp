@@ -107,6 +107,7 @@ Ranks startRanks() {
 }
 
 void frameRendered() { g_rendered = true; }
+void ranksWorkAlone() { g_rendered = true; }
 
 int endRanks(int code) {
   if (!g_started) return code;
@@ -126,6 +127,7 @@ Ranks startRanks() {
 }
 
 void frameRendered() {}
+void ranksWorkAlone() {}
 
 int endRanks(int code) { return code; }
 #endif

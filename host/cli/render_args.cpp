@@ -19,7 +19,27 @@ const std::vector<OptionSpec> kRenderOptions = {
     {"--aa", "", true},        {"--filter", "", true},    {"--aa-threshold", "", true},
     {"--aa-max-level", "", true}, {"--first-hit", "", true}, {"--inside-test", "", true},
     {"--shadows", "", true},   {"--bounds", "", true},    {"--check-nan", "", false},
+    {"--frames", "", true},
 };
+
+// "K" or "A-B" with A <= B, frame numbers from 0.
+std::pair<uint32_t, uint32_t> parseFrames(const std::string& text) {
+  auto number = [&](const std::string& part) {
+    if (part.empty() || part.size() > 9 || !std::all_of(part.begin(), part.end(), [](unsigned char c) {
+          return std::isdigit(c) != 0;
+        }))
+      throw UsageError("--frames: expected a frame number K or a range A-B (from 0), got '" + text + "'");
+    return static_cast<uint32_t>(std::stoul(part));
+  };
+  const size_t dash = text.find('-');
+  if (dash == std::string::npos) {
+    const uint32_t k = number(text);
+    return {k, k};
+  }
+  const uint32_t first = number(text.substr(0, dash)), last = number(text.substr(dash + 1));
+  if (last < first) throw UsageError("--frames: the range " + text + " ends before it starts");
+  return {first, last};
+}
 
 // The same list as the library's image writer, checked here so that a typo in -o
 // does not cost a whole render.
@@ -42,6 +62,26 @@ void checkOutput(const RenderRequest& request) {
 }
 
 }  // namespace
+
+std::string frameOutputPath(const std::string& path, uint32_t frame, uint32_t frames) {
+  const size_t slash = path.find_last_of('/');
+  const size_t name_start = slash == std::string::npos ? 0 : slash + 1;
+  const size_t hash_end = path.find_last_of('#');
+  if (hash_end != std::string::npos && hash_end >= name_start) {
+    size_t hash_start = hash_end;
+    while (hash_start > name_start && path[hash_start - 1] == '#') --hash_start;
+    std::string number = std::to_string(frame);
+    const size_t width = hash_end + 1 - hash_start;
+    if (number.size() < width) number.insert(0, width - number.size(), '0');
+    return path.substr(0, hash_start) + number + path.substr(hash_end + 1);
+  }
+  if (frames <= 1) return path;
+  const size_t width = std::max<size_t>(4, std::to_string(frames - 1).size());
+  std::string number = std::to_string(frame);
+  number.insert(0, width - number.size(), '0');
+  const size_t extension = path.size() - lowerExtension(path).size();
+  return path.substr(0, extension) + "_" + number + path.substr(extension);
+}
 
 std::string lowerExtension(const std::string& path) {
   const size_t slash = path.find_last_of('/');
@@ -83,6 +123,7 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
   request.quiet = parsed.has("--quiet");
   request.stats = parsed.has("--stats");
   request.check_nan = parsed.has("--check-nan");
+  if (const auto text = parsed.text("--frames")) request.frames = parseFrames(*text);
 
   if (const auto aov_name = parsed.text("--aov")) {
     PrismAov aov;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "prism.h"
@@ -38,6 +39,8 @@ struct RenderRequest {
   bool quiet = false;
   bool stats = false;  // --stats: where the render's time went
   bool check_nan = false;  // --check-nan: name the first non-finite value and its ray
+  // --frames K or A-B (inclusive): the frames of an animation to render; unset: all.
+  std::optional<std::pair<uint32_t, uint32_t>> frames;
 };
 
 // Throws UsageError naming the option at fault.
@@ -45,5 +48,11 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args);
 
 // The output's extension in lower case, with its dot (".png").
 std::string lowerExtension(const std::string& path);
+
+// Where frame `frame` of an animation of `frames` frames goes: the last run of
+// '#' in the file name replaced by the frame number padded to its length, else
+// "_NNNN" (at least 4 digits, as many as the last frame needs) put before the
+// extension. A still (frames == 1) without '#' keeps `path`.
+std::string frameOutputPath(const std::string& path, uint32_t frame, uint32_t frames);
 
 }  // namespace prism_cli

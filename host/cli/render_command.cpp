@@ -1,5 +1,6 @@
 // `prism render`: load the scene, apply the command line's overrides, render on the
-// chosen device, write the colour image or one AOV, and print a summary line.
+// chosen devices, write the colour image or one AOV, and print a summary line;
+// for an animation, each frame (--frames) in turn, one file each.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -159,14 +160,14 @@ void normalsForPng(std::vector<float>& pixels) {
   }
 }
 
-int writeOutput(const RenderRequest& request, PrismContext context, const PrismRenderOptions& options,
-                const std::vector<float>& rgba) {
-  const char* path = request.output_path.c_str();
+int writeOutput(const RenderRequest& request, const std::string& output_path, PrismContext context,
+                const PrismRenderOptions& options, const std::vector<float>& rgba) {
+  const char* path = output_path.c_str();
   if (!request.aov) {
     // The background colour is part of the picture, so 8-bit and RGB-only
     // formats get opaque RGB; .exr and .tif keep alpha (primary-ray coverage)
     // for compositing.
-    const std::string ext = lowerExtension(request.output_path);
+    const std::string ext = lowerExtension(output_path);
     if (ext == ".exr" || ext == ".tif" || ext == ".tiff") {
       if (prismWriteImage(path, rgba.data(), options.width, options.height, 4) != PRISM_OK) return failWithLastError();
       return kExitOk;
@@ -181,7 +182,7 @@ int writeOutput(const RenderRequest& request, PrismContext context, const PrismR
   if (prismGetAovChannels(*request.aov, &channels) != PRISM_OK) return failWithLastError();
   std::vector<float> pixels(static_cast<size_t>(options.width) * options.height * channels);
   if (prismGetAov(context, *request.aov, pixels.data(), pixels.size()) != PRISM_OK) return failWithLastError();
-  if (*request.aov == PRISM_AOV_NORMAL && lowerExtension(request.output_path) == ".png") normalsForPng(pixels);
+  if (*request.aov == PRISM_AOV_NORMAL && lowerExtension(output_path) == ".png") normalsForPng(pixels);
   if (prismWriteImage(path, pixels.data(), options.width, options.height, channels) != PRISM_OK) {
     return failWithLastError();
   }
@@ -201,7 +202,7 @@ std::string devicesText(PrismContext context) {
   return count == 1 ? names : std::to_string(count) + " devices (" + names + ")";
 }
 
-void printSummary(const RenderRequest& request, const PrismRenderOptions& options, const std::string& devices,
+void printSummary(const std::string& output_path, const PrismRenderOptions& options, const std::string& devices,
                   const PrismRenderStats& stats) {
   const uint64_t total = stats.primary_rays + stats.reflected_rays + stats.refracted_rays + stats.shadow_rays;
   // Throughput over tracing alone: set-up (kernels built on a cold start, the
@@ -227,7 +228,7 @@ void printSummary(const RenderRequest& request, const PrismRenderOptions& option
       stats.rays_per_pixel, first_hit ? first_hit : "?", shadows ? shadows : "?", stats.setup_seconds, tracing,
       static_cast<unsigned long long>(stats.primary_rays),
       static_cast<unsigned long long>(stats.reflected_rays), static_cast<unsigned long long>(stats.refracted_rays),
-      static_cast<unsigned long long>(stats.shadow_rays), mrays, request.output_path.c_str());
+      static_cast<unsigned long long>(stats.shadow_rays), mrays, output_path.c_str());
 }
 
 // --stats: the render's time by stage, each kernel's device time from its
@@ -309,6 +310,83 @@ bool reportNotFinite(PrismContext context, const PrismRenderOptions& options, co
   return report.found != 0;
 }
 
+// The frames of the scene to render: all, or --frames (checked against the
+// scene's count).
+struct FrameRange {
+  uint32_t first = 0, last = 0, total = 1;
+  uint32_t count() const { return last - first + 1; }
+};
+
+FrameRange framesToRender(const RenderRequest& request, PrismScene scene) {
+  FrameRange range;
+  if (prismGetFrameCount(scene, &range.total) != PRISM_OK || range.total == 0) range.total = 1;
+  range.last = range.total - 1;
+  if (!request.frames) return range;
+  if (request.frames->second >= range.total)
+    throw UsageError("--frames: the scene has " +
+                     (range.total == 1 ? std::string("one frame (0)")
+                                       : std::to_string(range.total) + " frames (0 to " +
+                                             std::to_string(range.total - 1) + ")") +
+                     ", so " + std::to_string(request.frames->second) + " is not one of them");
+  range.first = request.frames->first;
+  range.last = request.frames->second;
+  return range;
+}
+
+// What every frame of a render shares: the request, the options, the devices
+// in words, whether this process reports, and the animation's length (for the
+// output's name).
+struct FrameOutput {
+  const RenderRequest& request;
+  const PrismRenderOptions& options;
+  const std::string& devices;
+  bool speaks;
+  uint32_t frames;
+};
+
+// Renders one frame and, where this process reports, writes it and prints its
+// summary. Returns an exit code (kExitNotFinite: written, with a --check-nan finding).
+int renderFrame(const FrameOutput& out, PrismContext context, PrismScene scene, uint32_t frame) {
+  const RenderRequest& request = out.request;
+  const PrismRenderOptions& options = out.options;
+  std::vector<float> rgba(static_cast<size_t>(options.width) * options.height * 4);
+  PrismRenderStats stats{};
+  stats.struct_size = sizeof stats;
+  PrismStatus status;
+  {
+    const InterruptGuard interrupt;
+    ProgressBar bar(!request.quiet && out.speaks && stderrIsTerminal());
+    if (prismSetProgressCallback(context, onProgress, &bar) != PRISM_OK) return failWithLastError();
+    status = prismRender(context, scene, &options, rgba.data(), &stats);
+    prismSetProgressCallback(context, nullptr, nullptr);
+    bar.finish();
+    if (status != PRISM_OK && InterruptGuard::requested()) {
+      std::fprintf(stderr, "prism: interrupted; nothing written\n");
+      return kExitInterrupted;
+    }
+  }
+  if (status != PRISM_OK) return failWithLastError();
+  frameRendered();
+  if (!out.speaks) return kExitOk;
+  uint32_t warnings = 0;
+  prismGetRenderWarningCount(context, &warnings);
+  for (uint32_t i = 0; i < warnings; ++i) {
+    const char* message = nullptr;
+    if (prismGetRenderWarning(context, i, &message) == PRISM_OK) std::fprintf(stderr, "prism: warning: %s\n", message);
+  }
+
+  const std::string path = frameOutputPath(request.output_path, frame, out.frames);
+  const int written = writeOutput(request, path, context, options, rgba);
+  if (written != kExitOk) return written;
+  if (!request.quiet) printSummary(path, options, out.devices, stats);
+  if (request.stats) {
+    printStageTimes(context, stats);
+    printDeviceShares(context);
+  }
+  if (request.check_nan && reportNotFinite(context, options, rgba)) return kExitNotFinite;
+  return kExitOk;
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& args) {
@@ -359,6 +437,7 @@ int runRender(const std::vector<std::string>& args) {
   // Checked before the image is allocated (32768 x 32768 would take 16 GiB first).
   if (!applyOverrides(request, options)) return kExitFailure;
   if (!applyCameraOverrides(request, scene.get())) return failWithLastError();
+  const FrameRange frames = framesToRender(request, scene.get());
 
   PrismContextOptions context_options{};
   prismDefaultContextOptions(&context_options);
@@ -373,48 +452,39 @@ int runRender(const std::vector<std::string>& args) {
   if (prismCreateContext(selector, &context_options, &raw_context) != PRISM_OK) return failWithLastError();
   const ContextHandle context(raw_context);
   std::string devices = devicesText(context.get());
-  if (ranks.shared()) {
+
+  // Under mpirun, the frames of an animation are dealt whole to the ranks (the
+  // k-th frame rendered to rank k mod N), each writing its own; a single frame
+  // is shared by the ranks and written by rank 0.
+  const bool deal_frames = ranks.shared() && frames.count() > 1;
+  if (deal_frames) {
+    ranksWorkAlone();
+    devices = "MPI rank " + std::to_string(ranks.rank) + " of " + std::to_string(ranks.size) + " (" + devices + ")";
+  } else if (ranks.shared()) {
     // Every rank renders its part of the frame; rank 0 writes it and reports.
     const PrismFrameParts parts = frameParts(ranks);
     if (prismSetFrameParts(context.get(), &parts) != PRISM_OK) return failWithLastError();
     devices = std::to_string(ranks.size) + " MPI ranks (rank 0 on " + devices + ")";
   }
 
-  std::vector<float> rgba(static_cast<size_t>(options.width) * options.height * 4);
-  PrismRenderStats stats{};
-  stats.struct_size = sizeof stats;
-  PrismStatus status;
-  {
-    const InterruptGuard interrupt;
-    ProgressBar bar(!request.quiet && speaks && stderrIsTerminal());
-    if (prismSetProgressCallback(context.get(), onProgress, &bar) != PRISM_OK) return failWithLastError();
-    status = prismRender(context.get(), scene.get(), &options, rgba.data(), &stats);
-    prismSetProgressCallback(context.get(), nullptr, nullptr);
-    bar.finish();
-    if (status != PRISM_OK && InterruptGuard::requested()) {
-      std::fprintf(stderr, "prism: interrupted; nothing written\n");
-      return kExitInterrupted;
+  const FrameOutput output{request, options, devices, deal_frames || speaks, frames.total};
+  int outcome = kExitOk;
+  const uint32_t stride = deal_frames ? ranks.size : 1;
+  for (uint32_t frame = frames.first + (deal_frames ? ranks.rank : 0); frame <= frames.last; frame += stride) {
+    SceneHandle frame_scene;
+    if (frames.total > 1) {
+      PrismScene raw_frame = nullptr;
+      if (prismGetFrameScene(scene.get(), frame, &raw_frame) != PRISM_OK) return failWithLastError();
+      frame_scene.reset(raw_frame);
     }
+    const int code = renderFrame(output, context.get(), frame_scene ? frame_scene.get() : scene.get(), frame);
+    if (code == kExitNotFinite) {
+      outcome = code;  // the image is written; the other frames still are
+      continue;
+    }
+    if (code != kExitOk) return code;
   }
-  if (status != PRISM_OK) return failWithLastError();
-  frameRendered();
-  if (!speaks) return kExitOk;
-  uint32_t warnings = 0;
-  prismGetRenderWarningCount(context.get(), &warnings);
-  for (uint32_t i = 0; i < warnings; ++i) {
-    const char* message = nullptr;
-    if (prismGetRenderWarning(context.get(), i, &message) == PRISM_OK) std::fprintf(stderr, "prism: warning: %s\n", message);
-  }
-
-  const int written = writeOutput(request, context.get(), options, rgba);
-  if (written != kExitOk) return written;
-  if (!request.quiet) printSummary(request, options, devices, stats);
-  if (request.stats) {
-    printStageTimes(context.get(), stats);
-    printDeviceShares(context.get());
-  }
-  if (request.check_nan && reportNotFinite(context.get(), options, rgba)) return kExitNotFinite;
-  return kExitOk;
+  return outcome;
 }
 
 }  // namespace prism_cli

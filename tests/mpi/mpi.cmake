@@ -4,7 +4,8 @@
 # split differently (a sample sequence, adaptive passes, the Z-buffer's batch),
 # and with several devices in each rank; rank 0 alone reports; ranks started
 # with different options are refused; a rank that fails ends the run with an
-# error instead of leaving the others waiting.
+# error instead of leaving the others waiting; an animation's frames are dealt
+# whole to the ranks, each frame the same bits as one process's.
 # Run as: cmake -DPRISM=<exe> -DMPIEXEC=<mpirun> -DSOURCE_DIR=<repo> -DWORK_DIR=<scratch> -P mpi.cmake
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -95,3 +96,28 @@ run(${MPIEXEC} --oversubscribe -np 1 ${PRISM} render "${scene}" -o "${WORK_DIR}/
 if(rc EQUAL 0 OR NOT err MATCHES "9")
   message(FATAL_ERROR "a rank that fails must end the run with its error (exit ${rc}):\n${out}${err}")
 endif()
+
+# An animation's frames are dealt whole to the ranks (frame k of those rendered
+# to rank k mod N), each writing its own: the same bytes as one process's frames,
+# and each rank reports the frames it rendered.
+set(anim "${SOURCE_DIR}/scenes/animation.json")
+set(anim_size --width 48 --height 36 --spp 2 --frames 0-4 --device 0)
+run(${PRISM} render "${anim}" -o "${WORK_DIR}/anim_one.pfm" ${anim_size} --quiet)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the animation in one process exited ${rc}:\n${out}${err}")
+endif()
+run(${MPIEXEC} --oversubscribe -np 2 ${PRISM} render "${anim}" -o "${WORK_DIR}/anim_two.pfm" ${anim_size})
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the animation on 2 ranks exited ${rc}:\n${out}${err}")
+endif()
+string(REPLACE ";" "," lines "${out}")  # a summary's semicolons would split the matches
+string(REGEX MATCHALL "on MPI rank 1 of 2 [^\n]*anim_two_000[13]\\.pfm" rank1 "${lines}")
+string(REGEX MATCHALL "on MPI rank 0 of 2 [^\n]*anim_two_000[024]\\.pfm" rank0 "${lines}")
+list(LENGTH rank0 n0)
+list(LENGTH rank1 n1)
+if(NOT n0 EQUAL 3 OR NOT n1 EQUAL 2)
+  message(FATAL_ERROR "rank 0 must render frames 0, 2 and 4 and rank 1 frames 1 and 3, each saying so:\n${out}")
+endif()
+foreach(f 0000 0001 0002 0003 0004)
+  same(anim_one_${f} anim_two_${f})
+endforeach()
