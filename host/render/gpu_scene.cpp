@@ -169,8 +169,9 @@ void appendMesh(const Object& ob, const FlattenSettings& settings, std::vector<O
 MotionGpu flattenMotion(const Transform& open, const Transform& close, const Camera& camera) {
   MotionGpu g{};
   g.type = OBJECT_MOTION;
-  g.shutter_open = static_cast<float>(camera.shutter_open);
-  g.shutter_close = static_cast<float>(camera.shutter_close);
+  // Times on the device count from the shutter's open, as the camera's do.
+  g.shutter_open = 0.0f;
+  g.shutter_close = static_cast<float>(camera.shutter_close - camera.shutter_open);
   const DecomposedTransform ends[2] = {decompose(open), decompose(close)};
   float* translate[2] = {g.translate0, g.translate1};
   float* rotate[2] = {g.shape0 + MOTION_ROTATION, g.shape1 + MOTION_ROTATION};
@@ -400,8 +401,10 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   const Camera& c = scene.camera;
   g.camera.lens_radius = static_cast<float>(c.aperture);
   g.camera.focus_distance = static_cast<float>(c.focus_distance > 0 ? c.focus_distance : length(c.look_at - c.position));
-  g.camera.shutter_open = static_cast<float>(c.shutter_open);
-  g.camera.shutter_close = static_cast<float>(c.shutter_close);
+  // Time on the device counts from the shutter's open: a late frame of an
+  // animation (open near 1e6) would otherwise have instants 0.0625 apart.
+  g.camera.shutter_open = 0.0f;
+  g.camera.shutter_close = static_cast<float>(c.shutter_close - c.shutter_open);
   g.camera.moving = c.moving && c.hasShutterInterval() ? 1 : 0;
   put4(g.camera.look_at, c.look_at);
   put4(g.camera.origin_end, c.moving ? c.position_end : c.position);

@@ -90,3 +90,14 @@ TEST_CASE("an animation's frames render as the scenes written by hand for them",
           sharedRenderer().render(last, RenderOptions::fromScene(last)).rgba);
   }
 }
+
+TEST_CASE("a shutter that opens late blurs as finely as one that opens at 0", "[render][animation]") {
+  // Frame 999,999 of an animation one time unit a frame: its shutter opens at
+  // 999,999, where floats are 0.0625 apart; the device counts time from the
+  // open, so the frame is the same image as the first one's piece of motion.
+  const Scene late = parseScene(byHand("[999999, 999999.5]", 0, 0, -2, -1.5, true), "late.json");
+  const Scene early = parseScene(byHand("[0, 0.5]", 0, 0, -2, -1.5, true), "early.json");
+  const RenderResult a = sharedRenderer().render(late, RenderOptions::fromScene(late));
+  const RenderResult b = sharedRenderer().render(early, RenderOptions::fromScene(early));
+  CHECK(a.rgba == b.rgba);
+}
