@@ -171,7 +171,7 @@ PRISM_API PrismStatus prismGetSceneWarning(PrismScene scene, uint32_t index, con
  * one another by a step, the scene's motion spanning all of them): how many
  * frames it has (1 for a still), and frame `frame` (0-based) as a scene of its
  * own, released with prismReleaseScene, which renders as any scene does.
- * prismRender given the animation itself renders its frame 0. */
+ * prismRender and the ray queries given the animation itself use its frame 0. */
 PRISM_API PrismStatus prismGetFrameCount(PrismScene scene, uint32_t* count);
 PRISM_API PrismStatus prismGetFrameScene(PrismScene scene, uint32_t frame, PrismScene* out_scene);
 /* The scene's objects so far (the index the next object added will get). */

@@ -4,6 +4,7 @@
 #include "api/api_boundary.h"
 #include "api/api_enums.h"
 #include "api/api_handles.h"
+#include "scene/animation.h"
 #include "render/gpu_scene.h"
 
 using namespace prism;
@@ -19,7 +20,10 @@ RayQueryEngine& engineFor(PrismContext context, PrismScene scene, int accel) {
   AccelKind kind = parseAccelKind(name);
   if (!context->queries || context->queries_revision != scene->revision || context->queries_accel != kind) {
     context->queries.reset();
-    GpuScene gpu = flattenScene(scene->scene, RenderOptions::fromScene(scene->scene));
+    // An animation answers as its frame 0, as prismRender renders it.
+    const Scene& whole = scene->scene;
+    GpuScene gpu = whole.animation.frames > 1 ? flattenScene(sceneAtFrame(whole, 0), RenderOptions::fromScene(whole))
+                                              : flattenScene(whole, RenderOptions::fromScene(whole));
     std::vector<MaterialGpu> materials = std::move(gpu.materials);
     context->queries = std::make_unique<RayQueryEngine>(
         *context->context, std::move(static_cast<SceneGeometry&>(gpu)), kind, std::move(materials));

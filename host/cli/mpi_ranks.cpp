@@ -26,6 +26,7 @@ std::uint32_t launchedRanks() {
 #ifdef PRISM_WITH_MPI
 bool g_started = false;
 bool g_rendered = false;
+bool g_alone = false;  // ranks render whole frames each (ranksWorkAlone)
 Ranks g_ranks;
 MPI_Comm g_comm = MPI_COMM_NULL;  // prism's own, so that its tags meet no one else's
 
@@ -107,11 +108,20 @@ Ranks startRanks() {
 }
 
 void frameRendered() { g_rendered = true; }
-void ranksWorkAlone() { g_rendered = true; }
+void ranksWorkAlone() {
+  g_rendered = true;
+  g_alone = true;
+}
 
 int endRanks(int code) {
   if (!g_started) return code;
   if (code != 0 && g_ranks.shared() && !g_rendered) MPI_Abort(MPI_COMM_WORLD, code);
+  // Ranks that work alone wait for each other before any exits: mpirun ends
+  // the whole job when one rank exits with a failure, frames half done.
+  if (g_alone && g_ranks.shared()) {
+    int worst = 0;
+    MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, g_comm);
+  }
   MPI_Comm_free(&g_comm);
   MPI_Finalize();
   g_started = false;

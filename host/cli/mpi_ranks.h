@@ -26,7 +26,8 @@ PrismFrameParts frameParts(const Ranks& ranks);
 // Says the shared frame is rendered: the ranks wait for each other no more.
 void frameRendered();
 // Says the ranks render whole frames each (an animation's): none waits for
-// another, so one that fails ends alone, with its exit code.
+// another while rendering, so one that fails stops alone; at the end (endRanks)
+// every rank waits for all, so that mpirun ends none of them early.
 void ranksWorkAlone();
 // Ends MPI. With several ranks, a failure (exit code not 0) before the frame was
 // rendered ends every rank (MPI_Abort), since the others would wait for this one

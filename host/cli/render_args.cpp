@@ -64,6 +64,7 @@ void checkOutput(const RenderRequest& request) {
 }  // namespace
 
 std::string frameOutputPath(const std::string& path, uint32_t frame, uint32_t frames) {
+  if (frames <= 1) return path;
   const size_t slash = path.find_last_of('/');
   const size_t name_start = slash == std::string::npos ? 0 : slash + 1;
   const size_t hash_end = path.find_last_of('#');
@@ -75,7 +76,6 @@ std::string frameOutputPath(const std::string& path, uint32_t frame, uint32_t fr
     if (number.size() < width) number.insert(0, width - number.size(), '0');
     return path.substr(0, hash_start) + number + path.substr(hash_end + 1);
   }
-  if (frames <= 1) return path;
   const size_t width = std::max<size_t>(4, std::to_string(frames - 1).size());
   std::string number = std::to_string(frame);
   number.insert(0, width - number.size(), '0');

@@ -52,7 +52,7 @@ std::string lowerExtension(const std::string& path);
 // Where frame `frame` of an animation of `frames` frames goes: the last run of
 // '#' in the file name replaced by the frame number padded to its length, else
 // "_NNNN" (at least 4 digits, as many as the last frame needs) put before the
-// extension. A still (frames == 1) without '#' keeps `path`.
+// extension. A still (frames == 1) keeps `path` as it is.
 std::string frameOutputPath(const std::string& path, uint32_t frame, uint32_t frames);
 
 }  // namespace prism_cli

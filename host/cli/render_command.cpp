@@ -334,13 +334,15 @@ FrameRange framesToRender(const RenderRequest& request, PrismScene scene) {
 }
 
 // What every frame of a render shares: the request, the options, the devices
-// in words, whether this process reports, and the animation's length (for the
+// in words, whether this process writes and reports, whether it shows the
+// progress bar (one process of a run), and the animation's length (for the
 // output's name).
 struct FrameOutput {
   const RenderRequest& request;
   const PrismRenderOptions& options;
   const std::string& devices;
   bool speaks;
+  bool progress;
   uint32_t frames;
 };
 
@@ -354,14 +356,16 @@ int renderFrame(const FrameOutput& out, PrismContext context, PrismScene scene, 
   stats.struct_size = sizeof stats;
   PrismStatus status;
   {
-    const InterruptGuard interrupt;
-    ProgressBar bar(!request.quiet && out.speaks && stderrIsTerminal());
+    ProgressBar bar(!request.quiet && out.progress && stderrIsTerminal());
     if (prismSetProgressCallback(context, onProgress, &bar) != PRISM_OK) return failWithLastError();
     status = prismRender(context, scene, &options, rgba.data(), &stats);
     prismSetProgressCallback(context, nullptr, nullptr);
     bar.finish();
     if (status != PRISM_OK && InterruptGuard::requested()) {
-      std::fprintf(stderr, "prism: interrupted; nothing written\n");
+      if (out.frames > 1)
+        std::fprintf(stderr, "prism: interrupted; frame %u not written\n", static_cast<unsigned>(frame));
+      else
+        std::fprintf(stderr, "prism: interrupted; nothing written\n");
       return kExitInterrupted;
     }
   }
@@ -467,10 +471,25 @@ int runRender(const std::vector<std::string>& args) {
     devices = std::to_string(ranks.size) + " MPI ranks (rank 0 on " + devices + ")";
   }
 
-  const FrameOutput output{request, options, devices, deal_frames || speaks, frames.total};
+  // Each rank writes its own frames, so each checks where they go (rank 0 did).
+  if (deal_frames && !speaks && !outputFolderExists(request.output_path)) {
+    printError("cannot write '" + request.output_path + "': folder '" +
+               std::filesystem::path(request.output_path).parent_path().string() + "' does not exist on rank " +
+               std::to_string(ranks.rank));
+    return kExitFailure;
+  }
+
+  const FrameOutput output{request, options, devices, deal_frames || speaks, speaks, frames.total};
+  // One guard for all frames: a Ctrl-C between two frames stops the next.
+  const InterruptGuard interrupt;
   int outcome = kExitOk;
   const uint32_t stride = deal_frames ? ranks.size : 1;
   for (uint32_t frame = frames.first + (deal_frames ? ranks.rank : 0); frame <= frames.last; frame += stride) {
+    if (InterruptGuard::requested()) {
+      std::fprintf(stderr, "prism: interrupted; frame %u and those after it not written\n",
+                   static_cast<unsigned>(frame));
+      return kExitInterrupted;
+    }
     SceneHandle frame_scene;
     if (frames.total > 1) {
       PrismScene raw_frame = nullptr;

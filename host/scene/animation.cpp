@@ -8,6 +8,7 @@
 #include "scene/camera_check.h"
 #include "scene/motion.h"
 #include "scene/primitives/primitive_kind.h"
+#include "scene/transform.h"
 
 namespace prism {
 
@@ -79,6 +80,14 @@ Scene sceneAtFrame(const Scene& scene, int frame) {
     ob.transform = interpolate(start, end, s_open);
     ob.transform_end = interpolate(start, end, s_close);
     ob.moving = blurred;
+    // The path may pass through a transform neither end is (a scale from 1 to
+    // -1 crosses 0).
+    for (const Transform* t : {&ob.transform, &ob.transform_end}) {
+      if (t == &ob.transform_end && !blurred) break;
+      if (const std::string problem = transformProblem(*t); !problem.empty())
+        throw std::invalid_argument("frame " + std::to_string(frame) + " of the animation: objects[" +
+                                    std::to_string(i) + "]: its transform there: " + problem);
+    }
     if (blurred || ob.type == ObjectType::Mesh) continue;
     // Held still, it is what the loader makes of a static object: the kinds the
     // kernels keep in world space take the transform into their geometry.

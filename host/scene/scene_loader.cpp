@@ -139,7 +139,8 @@ class SceneParser : private JsonReader {
     if (const Json* p = find(v, "frames"))
       a.frames = int(integer(*p, member(path, "frames"), 1, kMaxAnimationFrames));
     if (const Json* p = find(v, "step"))
-      a.step = number(*p, member(path, "step"), "a time > 0", [](double x) { return x > 0; });
+      a.step = number(*p, member(path, "step"), "a time > 0 and at most 1e15",
+                      [](double x) { return x > 0 && x <= 1e15; });
     const std::string problem = animationProblem(m_scene);
     if (!problem.empty()) fail(path, problem);
   }

@@ -3,6 +3,7 @@ Every addition is checked by prism's scene loader, with its messages."""
 
 import ctypes
 import json as _json
+import operator
 import os
 
 import numpy as np
@@ -93,10 +94,13 @@ class Scene:
         """Frame `index` (from 0) of the animation as a scene of its own: the
         shutter moved by index x step, the moving objects and camera placed on
         their path for it. Render it as any scene."""
-        if not isinstance(index, int) or isinstance(index, bool) or index < 0:
-            raise ValueError("frame: expected a frame number >= 0, got %r" % (index,))
+        if isinstance(index, bool):
+            raise TypeError("frame: expected a frame number, got %r" % (index,))
+        index = operator.index(index)  # ints and NumPy integers; TypeError otherwise
+        if not 0 <= index < self.frame_count:
+            raise ValueError("frame: the scene has frames 0 to %d, got %d" % (self.frame_count - 1, index))
         handle = ctypes.c_void_p()
-        check(lib.prismGetFrameScene(self._handle, min(index, 0xFFFFFFFF), ctypes.byref(handle)))
+        check(lib.prismGetFrameScene(self._handle, index, ctypes.byref(handle)))
         return Scene(handle)
 
     @property

@@ -295,7 +295,9 @@ def test_animation_frames_render_as_the_scenes_written_for_them(ctx):
         frame = animated.frame(k)
         assert frame.frame_count == 1
         assert np.array_equal(ctx.render(frame).rgba, ctx.render(scene(-2 + k)).rgba)
-    with pytest.raises(prism.Error, match="frame 5 is not in the animation"):
-        animated.frame(5)
-    with pytest.raises(ValueError):
-        animated.frame(-1)
+    assert np.array_equal(ctx.render(animated.frame(np.int64(4))).rgba, ctx.render(scene(2)).rgba)
+    for bad in (5, -1, 2**40):
+        with pytest.raises(ValueError, match="the scene has frames 0 to 4"):
+            animated.frame(bad)
+    with pytest.raises(TypeError):
+        animated.frame(1.0)

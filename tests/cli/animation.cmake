@@ -2,7 +2,8 @@
 # frame, named by the frame number ("_NNNN" before the extension, or a run of
 # '#' in -o); --frames K and A-B render only those, each the same bytes as in the
 # whole run (PFM, whose bytes are the pixels); frames differ as the objects move;
-# a frame past the last is a usage error (exit 2) before any render.
+# a frame past the last is a usage error (exit 2) before any render; a still
+# keeps -o as it is.
 # Run as: cmake -DPRISM=<exe> -DSOURCE_DIR=<repo> -DWORK_DIR=<scratch> -P animation.cmake
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -73,4 +74,11 @@ endif()
 file(GLOB stray "${WORK_DIR}/past*" "${WORK_DIR}/backwards*")
 if(stray)
   message(FATAL_ERROR "a refused command line wrote ${stray}")
+endif()
+
+# A still keeps -o as it is, '#' and all.
+execute_process(COMMAND ${PRISM} render "${SOURCE_DIR}/scenes/whitted.json" -o "${WORK_DIR}/still_#.pfm" ${small} --quiet
+  RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 300)
+if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK_DIR}/still_#.pfm")
+  message(FATAL_ERROR "a still must be written to -o as given, still_#.pfm (exit ${rc}):\n${err}")
 endif()

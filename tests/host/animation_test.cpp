@@ -152,4 +152,13 @@ TEST_CASE("animations the format refuses, and frames whose camera cannot form an
   CHECK_NOTHROW(sceneAtFrame(scene, 1));
   CHECK_THROWS_WITH(sceneAtFrame(scene, 2), Catch::Contains("frame 2 of the animation: the camera's position and look_at"));
   CHECK_THROWS_WITH(sceneAtFrame(scene, -1), Catch::Contains("not in the animation"));
+  // A mirror image by the end: the stretch passes through 0 at the middle frame.
+  const Scene flip = parseScene(R"({
+    "animation": {"frames": 3},
+    "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                 "transform": {"scale": 1}, "transform_end": {"scale": [-1, 1, 1]}}]
+  })",
+                                "flip.json");
+  CHECK_NOTHROW(sceneAtFrame(flip, 0));
+  CHECK_THROWS_WITH(sceneAtFrame(flip, 1), Catch::Contains("frame 1 of the animation: objects[0]: its transform there"));
 }

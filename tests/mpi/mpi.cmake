@@ -101,7 +101,8 @@ endif()
 # to rank k mod N), each writing its own: the same bytes as one process's frames,
 # and each rank reports the frames it rendered.
 set(anim "${SOURCE_DIR}/scenes/animation.json")
-set(anim_size --width 48 --height 36 --spp 2 --frames 0-4 --device 0)
+set(anim_small --width 48 --height 36 --spp 2 --device 0)
+set(anim_size ${anim_small} --frames 0-4)
 run(${PRISM} render "${anim}" -o "${WORK_DIR}/anim_one.pfm" ${anim_size} --quiet)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the animation in one process exited ${rc}:\n${out}${err}")
@@ -121,3 +122,13 @@ endif()
 foreach(f 0000 0001 0002 0003 0004)
   same(anim_one_${f} anim_two_${f})
 endforeach()
+
+# A rank that fails while the frames are dealt stops alone: rank 0 still renders
+# and writes its frames (0 and 2), and the run reports the failure.
+run(${MPIEXEC} --oversubscribe -np 1 ${PRISM} render "${anim}" -o "${WORK_DIR}/alone.pfm" ${anim_small} --frames 0-3
+    --quiet : -np 1 ${PRISM} render "${anim}" -o "${WORK_DIR}/no-such-folder/alone.pfm" ${anim_small} --frames 0-3
+    --quiet)
+if(rc EQUAL 0 OR NOT err MATCHES "does not exist on rank 1" OR NOT EXISTS "${WORK_DIR}/alone_0000.pfm"
+   OR NOT EXISTS "${WORK_DIR}/alone_0002.pfm")
+  message(FATAL_ERROR "a failing rank must stop alone, rank 0 writing frames 0 and 2, the run failing (exit ${rc}):\n${out}${err}")
+endif()
