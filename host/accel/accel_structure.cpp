@@ -1,7 +1,6 @@
 #include "accel/accel_structure.h"
 
 #include <chrono>
-#include <cstdio>
 #include <stdexcept>
 
 #include "accel/builders.h"
@@ -109,17 +108,16 @@ std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<Object
     accel->stats.sah_cost = static_cast<double>(primitives);
     writeSceneHeader(Aabb(), *accel);
   } else {
-    PrimitiveSet prims = gatherPrimitives(objects);
+    PrimitiveSet prims = gatherPrimitives(objects, options.threads);
     e.build(objects, prims, options, *accel);
     accel->unbounded = prims.unbounded;
     accel->stats.primitives = prims.bounded.size();
     accel->stats.unbounded = prims.unbounded.size();
   }
   if (options.kdop_objects && kind != AccelKind::None) accel->kernel_options += " -DPRISM_OBJECT_KDOP";
-  // Moving objects' code is compiled only into the programs of scenes that have some.
-  if (anyMoving(objects)) accel->kernel_options += " " + std::string(kMotionKernelOption);
-  // So is each larger kind's (quadrics, polygons, polyhedra, patches).
-  accel->kernel_options += " " + kindsKernelOption(objects);
+  // Moving objects' code is compiled only into the programs of scenes that
+  // have some, and so is each larger kind's (quadrics, polygons, polyhedra, patches).
+  accel->kernel_options += " " + primitiveKernelOptions(objects);
   accel->stats.bytes = accel->nodes.size() * sizeof(AccelWord) + accel->packets.size() * sizeof(TriPacketGpu) +
                        accel->unbounded.size() * sizeof(std::int32_t);
   accel->stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

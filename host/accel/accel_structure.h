@@ -60,8 +60,8 @@ struct alignas(16) AccelWord {
 struct DeviceAccel {
   AccelKind kind = AccelKind::None;
   // Build options for extend.cl / occlude.cl: -DPRISM_ACCEL_<KIND>, the
-  // traversal stack depth this tree needs, kMotionKernelOption when some
-  // primitive moves, and the kinds to compile (kindsKernelOption).
+  // traversal stack depth this tree needs, and what the primitives ask
+  // (primitiveKernelOptions: kMotionKernelOption, the kinds to compile).
   std::string kernel_options;
   // Words 0 and 1: the scene box of the bounded primitives (lo xyz, hi xyz);
   // from word 2: the structure's nodes (BvhNodeGpu, OctreeNodeGpu, BspNodeGpu).
@@ -71,9 +71,6 @@ struct DeviceAccel {
   AccelStats stats;
 };
 
-// The kernel build option that compiles moving objects' intersection
-// (kernels/geometry/motion.h); programs without it never see a moving object.
-constexpr const char* kMotionKernelOption = "-DPRISM_MOTION";
 
 struct AccelBuildOptions {
   int threads = 0;  // 0: std::thread::hardware_concurrency()

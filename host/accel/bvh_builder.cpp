@@ -10,8 +10,13 @@
 #include <atomic>
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <utility>
 
+#include "accel/box4.h"
 #include "accel/builders.h"
 #include "accel/kdop_bounds.h"
 #include "accel/leaf_packets.h"
@@ -21,7 +26,6 @@
 namespace prism {
 namespace {
 
-constexpr int kBins = 32;
 constexpr int kMaxLeafPrims = 16;      // at most 4 triangle + 4 other packets < BVH_LEAF_MAX_PACKETS
 constexpr double kTraversalCost = 2.0;  // PERF-NOTES: traversal cost 2 against a 4-wide packet test of 1
 constexpr int kParallelPrims = 4096;    // subtrees at least this big may get their own thread
@@ -33,7 +37,34 @@ struct PrimRef {
   float hi[3];
   std::int32_t index;  // into the PrimitiveSet's arrays
   float centroid(int a) const { return lo[a] + hi[a]; }  // twice the centre: only order matters
+  // The box as two four-lane words (lane 3: id and index, never read).
+  Float4 lo4() const { return loadFloat4(this); }
+  Float4 hi4() const { return loadFloat4(reinterpret_cast<const char*>(this) + 16); }
+  Float4 centroid4() const { return xyzOnly(lo4() + hi4()); }
 };
+static_assert(sizeof(PrimRef) == 32 && offsetof(PrimRef, hi) == 16, "PrimRef is read as two Float4 words");
+
+// Whose resize leaves the new elements unwritten: the references are written
+// on several threads, and zeroing them first would touch every page on one.
+template <typename T>
+struct UninitialisedAllocator : std::allocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = UninitialisedAllocator<U>;
+  };
+  UninitialisedAllocator() = default;
+  template <typename U>
+  UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
+  template <typename U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+using PrimRefs = std::vector<PrimRef, UninitialisedAllocator<PrimRef>>;
 
 struct Node2 {
   Aabb box;
@@ -44,24 +75,109 @@ struct Node2 {
 
 double blocks(int n) { return static_cast<double>((n + PACKET_LANES - 1) / PACKET_LANES); }
 
-class Bvh2Builder {
- public:
-  Bvh2Builder(std::vector<PrimRef>& refs, ThreadBudget& budget) : m_refs(refs), m_budget(budget) {}
+// What a node's references span: their boxes and their centroids. A node gets
+// its own from its parent's partition, so no node reads its references once
+// more just to bound them.
+struct RefExtent {
+  Box4 box, centroids;
+  void add(const PrimRef& r) {
+    const Float4 lo = r.lo4(), hi = r.hi4();
+    box.extend(lo, hi);
+    centroids.extend(xyzOnly(lo + hi));
+  }
+};
 
-  std::vector<Node2> build() {
-    const int n = static_cast<int>(m_refs.size());
-    m_nodes.resize(std::max(1, 2 * n - 1));
-    m_next = 1;
-    buildNode(0, 0, n, 0);
-    m_nodes.resize(m_next.load());
-    return std::move(m_nodes);
+// Centroid to bin, per axis, over a node's centroid bounds: the one
+// expression that both the binning and the partition use. A node of n
+// references gets min(n, kMaxBins) bins (at least kMinBins): more bins than
+// references only add empty ones to fill and sweep, and small nodes are most
+// of the tree.
+class BinMap {
+ public:
+  static constexpr int kMaxBins = 32, kMinBins = 8;
+  BinMap(const Box4& centroids, int references)
+      : m_count(std::max(kMinBins, std::min(kMaxBins, references))), m_lo(xyzOnly(centroids.lo)) {
+    for (int a = 0; a < 3; ++a) {
+      const float extent = centroids.hi[a] - centroids.lo[a];
+      m_usable[a] = extent > 0 && std::isfinite(extent);
+      m_scale[a] = m_usable[a] ? float(m_count * (1 - 1e-6)) / extent : 0.0f;
+    }
+    m_scale[3] = 0.0f;
+    m_top = Int4{m_count - 1, m_count - 1, m_count - 1, 0};
+  }
+  int count() const { return m_count; }
+  bool usable(int axis) const { return m_usable[axis]; }
+  // Bins of r's centroid on the three axes (lane 3: 0).
+  Int4 bins(const PrimRef& r) const {
+    const Int4 b = __builtin_convertvector(xyzOnly((r.centroid4() - m_lo) * m_scale), Int4);
+    const Int4 zero = {0, 0, 0, 0};
+    const Int4 clamped = b < zero ? zero : b;
+    return clamped > m_top ? m_top : clamped;
   }
 
  private:
-  struct Bin {
-    Aabb box;
-    int count = 0;
-  };
+  int m_count;
+  Float4 m_lo, m_scale = {0, 0, 0, 0};
+  Int4 m_top;
+  bool m_usable[3];
+};
+
+// A split of a node's references: on which axis (-1: none found), where (a
+// bin: the first of the right side), and its unnormalised SAH
+// cost (sum of area * blocks over the two sides).
+struct Split {
+  int axis = -1;
+  int at = 0;
+  double cost = INFINITY;
+};
+
+constexpr int kTwoBinSetsPrims = 1024;  // nodes this big bin into two sets (binnedSplit)
+
+// The bins of one node on the three axes: the boxes and counts of the
+// references whose centroids fall in each (the first `bins` of each axis used).
+struct BinSet {
+  static constexpr int kBins = BinMap::kMaxBins;
+  Box4 box[3][kBins];
+  int counts[3][kBins] = {};
+  int bins;
+
+  explicit BinSet(int count) : bins(count) {}
+  void add(const PrimRef& r, Int4 bin) {
+    const Float4 lo = r.lo4(), hi = r.hi4();
+    for (int axis = 0; axis < 3; ++axis) {
+      box[axis][bin[axis]].extend(lo, hi);
+      ++counts[axis][bin[axis]];
+    }
+  }
+  void add(const BinSet& other) {
+    for (int axis = 0; axis < 3; ++axis)
+      for (int b = 0; b < bins; ++b) {
+        box[axis][b].extend(other.box[axis][b]);
+        counts[axis][b] += other.counts[axis][b];
+      }
+  }
+};
+
+class Bvh2Builder {
+ public:
+  Bvh2Builder(PrimRefs& refs, ThreadBudget& budget) : m_refs(refs), m_budget(budget) {}
+
+  // `all`: what every reference spans.
+  std::vector<Node2> build(const RefExtent& all) {
+    const int n = static_cast<int>(m_refs.size());
+    // Room for the most nodes n references can make (2n - 1), and the
+    // partition's scratch, both left untouched until used: a tree of leaves
+    // of about 11 references claims a fifth of that room, and initialising
+    // all of it took 50 ms at 1.1M references.
+    m_nodes.reset(new NodeRoom[std::max(1, 2 * n - 1)]);
+    m_scratch.resize(m_refs.size());
+    m_next = 1;
+    buildNode(0, 0, n, 0, all);
+    return std::vector<Node2>(node(0), node(0) + m_next.load());
+  }
+
+ private:
+  static constexpr int kBins = BinMap::kMaxBins;
 
   void makeLeaf(Node2& node, int begin, int end) {
     node.left = node.right = -1;
@@ -69,38 +185,27 @@ class Bvh2Builder {
     node.count = end - begin;
   }
 
-  void buildNode(int index, int begin, int end, int depth) {
-    Node2& node = m_nodes[index];
+  Node2* node(int index) { return std::launder(reinterpret_cast<Node2*>(&m_nodes[index])); }
+
+  void buildNode(int index, int begin, int end, int depth, const RefExtent& extent) {
+    Node2& node = *new (&m_nodes[index]) Node2;
     const int n = end - begin;
-    Aabb box, centroids;
-    for (int i = begin; i < end; ++i) {
-      const PrimRef& r = m_refs[i];
-      for (int a = 0; a < 3; ++a) {
-        box.lo[a] = std::min(box.lo[a], r.lo[a]);
-        box.hi[a] = std::max(box.hi[a], r.hi[a]);
-        float c = r.centroid(a);
-        centroids.lo[a] = std::min(centroids.lo[a], c);
-        centroids.hi[a] = std::max(centroids.hi[a], c);
-      }
-    }
-    node.box = box;
+    node.box = extent.box.aabb();
     if (n <= 1) return makeLeaf(node, begin, end);
 
+    // A leaf of at most 2 packets costs no more than the node step alone, so
+    // no split can beat it: no need to price them.
+    if (blocks(n) <= kTraversalCost && n <= kMaxLeafPrims) return makeLeaf(node, begin, end);
     int mid = -1;
+    RefExtent left, right;
     if (depth < kMedianDepth) {
-      int axis = -1, split_bin = 0;
-      double best_cost = INFINITY;
-      findSplit(begin, end, centroids, &axis, &split_bin, &best_cost);
+      const BinMap map(extent.centroids, n);
+      const Split split = binnedSplit(begin, end, map);
       const double leaf_cost = blocks(n);
-      const double split_cost = kTraversalCost + best_cost / std::max(box.area(), 1e-300);
-      if (n <= kMaxLeafPrims && (axis < 0 || leaf_cost <= split_cost)) return makeLeaf(node, begin, end);
-      if (axis >= 0) {
-        const double lo = centroids.lo[axis];
-        const double scale = kBins * (1 - 1e-6) / (double(centroids.hi[axis]) - lo);
-        auto it = std::partition(m_refs.begin() + begin, m_refs.begin() + end, [&](const PrimRef& r) {
-          return std::min(kBins - 1, static_cast<int>((r.centroid(axis) - lo) * scale)) < split_bin;
-        });
-        mid = static_cast<int>(it - m_refs.begin());
+      const double split_cost = kTraversalCost + split.cost / std::max(node.box.area(), 1e-300);
+      if (n <= kMaxLeafPrims && (split.axis < 0 || leaf_cost <= split_cost)) return makeLeaf(node, begin, end);
+      if (split.axis >= 0) {
+        mid = partition(begin, end, map, split.axis, split.at, &left, &right);
         if (mid == begin || mid == end) mid = -1;
       }
     } else if (n <= kMaxLeafPrims) {
@@ -111,77 +216,113 @@ class Bvh2Builder {
       // along the widest centroid axis.
       int axis = 0;
       for (int a = 1; a < 3; ++a)
-        if (centroids.hi[a] - centroids.lo[a] > centroids.hi[axis] - centroids.lo[axis]) axis = a;
+        if (extent.centroids.hi[a] - extent.centroids.lo[a] > extent.centroids.hi[axis] - extent.centroids.lo[axis])
+          axis = a;
       mid = begin + n / 2;
       std::nth_element(m_refs.begin() + begin, m_refs.begin() + mid, m_refs.begin() + end,
                        [axis](const PrimRef& a, const PrimRef& b) { return a.centroid(axis) < b.centroid(axis); });
+      left = right = RefExtent();
+      for (int i = begin; i < mid; ++i) left.add(m_refs[i]);
+      for (int i = mid; i < end; ++i) right.add(m_refs[i]);
     }
 
-    const int left = m_next.fetch_add(2);
-    node.left = left;
-    node.right = left + 1;
+    const int first_child = m_next.fetch_add(2);
+    node.left = first_child;
+    node.right = first_child + 1;
     TaskGroup group(m_budget);
-    group.run([=] { buildNode(left, begin, mid, depth + 1); }, mid - begin >= kParallelPrims);
-    buildNode(left + 1, mid, end, depth + 1);
+    group.run([=] { buildNode(first_child, begin, mid, depth + 1, left); }, mid - begin >= kParallelPrims);
+    buildNode(first_child + 1, mid, end, depth + 1, right);
     group.wait();
   }
 
-  // Best binned SAH split: its axis (-1 if none), the first bin of the right
-  // side, and its unnormalised cost (sum of area * blocks).
-  void findSplit(int begin, int end, const Aabb& centroids, int* best_axis, int* best_bin, double* best_cost) {
-    // One pass over the references bins all three axes (three passes read the
-    // references three times: this was the builder's hottest loop). The bin of
-    // each axis is the same expression as before, so the tree is unchanged.
-    double lo[3], scale[3];
-    bool usable[3];
-    for (int axis = 0; axis < 3; ++axis) {
-      lo[axis] = centroids.lo[axis];
-      const double extent = double(centroids.hi[axis]) - lo[axis];
-      usable[axis] = extent > 0;
-      scale[axis] = usable[axis] ? kBins * (1 - 1e-6) / extent : 0;
-    }
-    Bin bins[3][kBins];
+  // Moves the references whose bin on `axis` lies before `split_bin` to the
+  // front of [begin, end) and returns where the others start; bounds both sides
+  // on the way. Out of place and without branches on the references (a branch
+  // per reference mispredicts half the time): each is copied to the next free
+  // slot at the front or the back of the same range of m_scratch, then back.
+  int partition(int begin, int end, const BinMap& map, int axis, int split_bin, RefExtent* left, RefExtent* right) {
+    PrimRef* refs = m_refs.data();
+    PrimRef* scratch = m_scratch.data();
+    int front = begin, back = end - 1;
     for (int i = begin; i < end; ++i) {
-      const PrimRef& r = m_refs[i];
-      for (int axis = 0; axis < 3; ++axis) {
-        const int b = std::min(kBins - 1, static_cast<int>((r.centroid(axis) - lo[axis]) * scale[axis]));
-        Bin& bin = bins[axis][b];
-        ++bin.count;
-        for (int a = 0; a < 3; ++a) {
-          bin.box.lo[a] = std::min(bin.box.lo[a], r.lo[a]);
-          bin.box.hi[a] = std::max(bin.box.hi[a], r.hi[a]);
-        }
-      }
+      const bool goes_left = map.bins(refs[i])[axis] < split_bin;
+      scratch[goes_left ? front : back] = refs[i];
+      front += goes_left;
+      back -= !goes_left;
     }
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!usable[axis]) continue;
-      double right_cost[kBins];
-      Aabb acc;
-      int count = 0;
-      for (int b = kBins - 1; b > 0; --b) {
-        acc.extend(bins[axis][b].box);
-        count += bins[axis][b].count;
-        right_cost[b] = count ? acc.area() * blocks(count) : 0;
-      }
-      acc = Aabb();
-      count = 0;
-      for (int b = 1; b < kBins; ++b) {
-        acc.extend(bins[axis][b - 1].box);
-        count += bins[axis][b - 1].count;
-        if (count == 0 || count == end - begin) continue;
-        double cost = acc.area() * blocks(count) + right_cost[b];
-        if (cost < *best_cost) {
-          *best_cost = cost;
-          *best_axis = axis;
-          *best_bin = b;
-        }
-      }
+    RefExtent l, r;
+    for (int i = begin; i < front; ++i) {
+      l.add(scratch[i]);
+      refs[i] = scratch[i];
     }
+    for (int i = front; i < end; ++i) {
+      r.add(scratch[i]);
+      refs[i] = scratch[i];
+    }
+    *left = l;
+    *right = r;
+    return front;
   }
 
-  std::vector<PrimRef>& m_refs;
+  // Best binned SAH split: its axis (-1 if none), the first bin of the right
+  // side, and its unnormalised cost (sum of area * blocks). One pass over the
+  // references bins all three axes.
+  Split binnedSplit(int begin, int end, const BinMap& map) const {
+    const int bins = map.count();
+    BinSet set(bins);
+    int i = begin;
+    if (end - begin >= kTwoBinSetsPrims) {
+      // Neighbouring references mostly fall in the same bins, and each update
+      // would wait for the last one's store: even and odd references go to
+      // two sets of bins, summed after.
+      BinSet odd(bins);
+      for (; i + 1 < end; i += 2) {
+        set.add(m_refs[i], map.bins(m_refs[i]));
+        odd.add(m_refs[i + 1], map.bins(m_refs[i + 1]));
+      }
+      set.add(odd);
+    }
+    for (; i < end; ++i) set.add(m_refs[i], map.bins(m_refs[i]));
+    // A split after an empty bin costs what the split before it does, so only
+    // splits after a filled bin are priced (most bins of a small node are empty).
+    Split best;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!map.usable(axis)) continue;
+      const int* count_of = set.counts[axis];
+      double right_cost[kBins];
+      Box4 acc;
+      int count = 0;
+      double cost_here = 0;
+      for (int b = bins - 1; b > 0; --b) {
+        if (count_of[b]) {
+          acc.extend(set.box[axis][b]);
+          count += count_of[b];
+          cost_here = acc.area() * blocks(count);
+        }
+        right_cost[b] = cost_here;
+      }
+      acc = Box4();
+      count = 0;
+      for (int b = 1; b < bins; ++b) {
+        if (!count_of[b - 1]) continue;
+        acc.extend(set.box[axis][b - 1]);
+        count += count_of[b - 1];
+        if (count == end - begin) break;
+        const double cost = acc.area() * blocks(count) + right_cost[b];
+        if (cost < best.cost) best = Split{axis, b, cost};
+      }
+    }
+    return best;
+  }
+
+  PrimRefs& m_refs;
+  PrimRefs m_scratch;  // the partition's, range for range as m_refs
   ThreadBudget& m_budget;
-  std::vector<Node2> m_nodes;
+  // Node i is constructed in room i when buildNode claims it.
+  struct NodeRoom {
+    alignas(Node2) unsigned char bytes[sizeof(Node2)];
+  };
+  std::unique_ptr<NodeRoom[]> m_nodes;
   std::atomic<int> m_next{1};
 };
 
@@ -217,7 +358,7 @@ void childrenFirst(const std::vector<Node2>& nodes, Leaf leaf, Join join) {
 // The nodes' linear bounds from the primitives' (PrimitiveSet::bounds_open and
 // bounds_close).
 MotionBoxes nodeMotionBoxes(const PrimitiveSet& prims, const std::vector<Node2>& nodes,
-                            const std::vector<PrimRef>& refs) {
+                            const PrimRefs& refs) {
   MotionBoxes m;
   m.open.resize(nodes.size());
   m.close.resize(nodes.size());
@@ -239,7 +380,7 @@ MotionBoxes nodeMotionBoxes(const PrimitiveSet& prims, const std::vector<Node2>&
 
 // The diagonal slabs of every binary node (kdop_bounds.h).
 std::vector<DiagonalSlabs> nodeDiagonalSlabs(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims,
-                                             const std::vector<Node2>& nodes, const std::vector<PrimRef>& refs) {
+                                             const std::vector<Node2>& nodes, const PrimRefs& refs) {
   std::vector<DiagonalSlabs> slabs(nodes.size(), DiagonalSlabs::empty());
   childrenFirst(
       nodes,
@@ -254,23 +395,88 @@ std::vector<DiagonalSlabs> nodeDiagonalSlabs(const std::vector<ObjectGpu>& objec
   return slabs;
 }
 
+// Every binary leaf's packets (indexed by node; inner nodes get none). The
+// leaves are taken in the order of their references, cut into one run per
+// thread of about the same number of references; each run is written on its
+// own thread and the runs are joined in order, so the result does not depend
+// on the thread count. Reading the leaves' objects is most of the work (they
+// lie scattered in memory), hence the threads and the prefetching.
+std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects, const std::vector<Node2>& nodes,
+                                          const PrimRefs& refs, ThreadBudget& budget,
+                                          std::vector<TriPacketGpu>& packets) {
+  std::vector<PacketRange> ranges(nodes.size());
+  std::vector<std::int32_t> leaf_at(refs.size(), -1);  // the leaf whose references start here
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (nodes[i].left < 0 && nodes[i].count > 0) leaf_at[nodes[i].first] = static_cast<std::int32_t>(i);
+  std::vector<std::int32_t> leaves;
+  leaves.reserve(nodes.size() / 2 + 1);
+  for (std::int32_t leaf : leaf_at)
+    if (leaf >= 0) leaves.push_back(leaf);
+
+  const std::size_t runs = std::max(1, budget.total());
+  std::vector<std::size_t> run_start(runs + 1, leaves.size());
+  run_start[0] = 0;
+  for (std::size_t r = 1, leaf = 0; r < runs; ++r) {
+    const std::size_t refs_before = refs.size() * r / runs;
+    while (leaf < leaves.size() && static_cast<std::size_t>(nodes[leaves[leaf]].first) < refs_before) ++leaf;
+    run_start[r] = leaf;
+  }
+  std::vector<std::vector<TriPacketGpu>> run_packets(runs);
+  auto writeRun = [&](std::size_t r) {
+    std::vector<TriPacketGpu>& out = run_packets[r];
+    // A leaf of n triangles takes ceil(n / 4) packets, at most n / 4 + 1; the
+    // first run makes room for every run's, as the others are joined onto it.
+    const std::size_t leaves_in = r == 0 ? leaves.size() : run_start[r + 1] - run_start[r];
+    const std::size_t refs_in = r == 0 ? refs.size() : refs.size() / runs + 1;
+    out.reserve(refs_in / PACKET_LANES + leaves_in);
+    std::int32_t ids[kMaxLeafPrims];  // every leaf holds at most kMaxLeafPrims
+    for (std::size_t k = run_start[r]; k < run_start[r + 1]; ++k) {
+      const Node2& leaf = nodes[leaves[k]];
+      // The objects of a leaf a few leaves ahead, on their way into the cache.
+      if (k + 4 < run_start[r + 1]) {
+        const Node2& ahead = nodes[leaves[k + 4]];
+        for (int i = 0; i < ahead.count; ++i) __builtin_prefetch(&objects[refs[ahead.first + i].id]);
+      }
+      for (int i = 0; i < leaf.count; ++i) ids[i] = refs[leaf.first + i].id;
+      ranges[leaves[k]] = appendLeafPackets(objects, ids, leaf.count, out);
+    }
+  };
+  {
+    TaskGroup group(budget);
+    for (std::size_t r = 1; r < runs; ++r) group.run([&writeRun, r] { writeRun(r); }, true);
+    writeRun(0);
+    group.wait();
+  }
+  std::size_t total = packets.size();
+  for (const auto& run : run_packets) total += run.size();
+  for (std::size_t r = 0; r < runs; ++r) {
+    const auto offset = static_cast<std::uint32_t>(packets.size());
+    for (std::size_t k = run_start[r]; k < run_start[r + 1]; ++k) ranges[leaves[k]].start += offset;
+    if (packets.empty()) {  // the first run in place, usually with room for the rest
+      packets = std::move(run_packets[r]);
+      packets.reserve(total);
+    } else {
+      packets.insert(packets.end(), run_packets[r].begin(), run_packets[r].end());
+    }
+  }
+  return ranges;
+}
+
 class WideFlattener {
  public:
   // `motion`: the nodes' linear bounds, for a tree over moving primitives (nodes
   // then carry their children's boxes at shutter open and at close); else null.
   // `kdop`: every binary node's diagonal slabs, for a tree whose nodes carry
   // them; else null.
-  WideFlattener(const std::vector<ObjectGpu>& objects, const std::vector<Node2>& nodes,
-                const std::vector<PrimRef>& refs, const MotionBoxes* motion, const std::vector<DiagonalSlabs>* kdop,
-                DeviceAccel& out)
-      : m_objects(objects), m_nodes(nodes), m_refs(refs), m_motion(motion), m_kdop(kdop), m_out(out) {
-    m_ids.reserve(kMaxLeafPrims);
-  }
+  // `leaf_packets`: each binary leaf's packets, already in out.packets.
+  WideFlattener(const std::vector<Node2>& nodes, const std::vector<PacketRange>& leaf_packets,
+                const MotionBoxes* motion, const std::vector<DiagonalSlabs>* kdop, DeviceAccel& out)
+      : m_nodes(nodes), m_leaf_packets(leaf_packets), m_motion(motion), m_kdop(kdop), m_out(out) {}
 
   void run(double root_area) {
     m_root_area = root_area > 0 ? root_area : 1;
     m_wide.reserve(m_nodes.size() / 4 + 1);
-    if (m_refs.empty()) {
+    if (m_nodes.empty()) {
       pushNode();
     } else if (m_nodes[0].left < 0) {
       // A single leaf: a root with one child.
@@ -359,9 +565,7 @@ class WideFlattener {
     const Node2& c = m_nodes[node2];
     int code;
     if (c.left < 0) {
-      m_ids.clear();
-      for (int i = 0; i < c.count; ++i) m_ids.push_back(m_refs[c.first + i].id);
-      PacketRange r = appendLeafPackets(m_objects, m_ids.data(), m_ids.size(), m_out.packets);
+      const PacketRange r = m_leaf_packets[node2];
       code = ~static_cast<int>((r.start << BVH_LEAF_COUNT_BITS) | (r.count - 1));
       ++m_leaves;
       m_sah += c.box.area() / m_root_area * c.count;
@@ -402,16 +606,14 @@ class WideFlattener {
     return index;
   }
 
-  const std::vector<ObjectGpu>& m_objects;
   const std::vector<Node2>& m_nodes;
-  const std::vector<PrimRef>& m_refs;
+  const std::vector<PacketRange>& m_leaf_packets;
   const MotionBoxes* m_motion;
   const std::vector<DiagonalSlabs>* m_kdop;
   DeviceAccel& m_out;
   std::vector<BvhNodeGpu> m_wide;
   std::vector<BvhMotionBoundsGpu> m_close;  // m_wide[i]'s children at shutter close
   std::vector<BvhKdopGpu> m_slabs;          // m_wide[i]'s children's diagonal slabs
-  std::vector<std::int32_t> m_ids;
   AccelStats m_stats;
   std::size_t m_leaves = 0;
   double m_sah = 0, m_root_area = 1;
@@ -427,19 +629,36 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
   // each node keeps its children's boxes at open and close, which a ray
   // interpolates to its time; without, it is built over the swept boxes.
   const bool linear = prims.moving && options.bvh_linear_bounds && !prims.bounded.empty();
-  std::vector<PrimRef> refs(prims.bounded.size());
-  for (std::size_t i = 0; i < refs.size(); ++i) {
-    Aabb b = prims.bounds[i];
-    if (linear)
-      for (int a = 0; a < 3; ++a) {
-        b.lo[a] = 0.5f * prims.bounds_open[i].lo[a] + 0.5f * prims.bounds_close[i].lo[a];
-        b.hi[a] = 0.5f * prims.bounds_open[i].hi[a] + 0.5f * prims.bounds_close[i].hi[a];
-      }
-    refs[i] = PrimRef{{b.lo[0], b.lo[1], b.lo[2]}, prims.bounded[i], {b.hi[0], b.hi[1], b.hi[2]},
-                      static_cast<std::int32_t>(i)};
-  }
+  // The references, and what they span, written on every thread in runs.
+  PrimRefs refs(prims.bounded.size());
   ThreadBudget budget(options.threads);
-  std::vector<Node2> nodes = refs.empty() ? std::vector<Node2>{} : Bvh2Builder(refs, budget).build();
+  const std::size_t runs = refs.size() >= kParallelBoundsPrims ? static_cast<std::size_t>(budget.total()) : 1;
+  std::vector<RefExtent> run_extent(runs);
+  auto writeRefs = [&](std::size_t r) {
+    for (std::size_t i = refs.size() * r / runs, end = refs.size() * (r + 1) / runs; i < end; ++i) {
+      Aabb b = prims.bounds[i];
+      if (linear)
+        for (int a = 0; a < 3; ++a) {
+          b.lo[a] = 0.5f * prims.bounds_open[i].lo[a] + 0.5f * prims.bounds_close[i].lo[a];
+          b.hi[a] = 0.5f * prims.bounds_open[i].hi[a] + 0.5f * prims.bounds_close[i].hi[a];
+        }
+      refs[i] = PrimRef{{b.lo[0], b.lo[1], b.lo[2]}, prims.bounded[i], {b.hi[0], b.hi[1], b.hi[2]},
+                        static_cast<std::int32_t>(i)};
+      run_extent[r].add(refs[i]);
+    }
+  };
+  {
+    TaskGroup group(budget);
+    for (std::size_t r = 1; r < runs; ++r) group.run([&writeRefs, r] { writeRefs(r); }, true);
+    writeRefs(0);
+    group.wait();
+  }
+  RefExtent all;
+  for (const RefExtent& e : run_extent) {
+    all.box.extend(e.box);
+    all.centroids.extend(e.centroids);
+  }
+  std::vector<Node2> nodes = refs.empty() ? std::vector<Node2>{} : Bvh2Builder(refs, budget).build(all);
   writeSceneHeader(prims.scene, out);
   MotionBoxes motion;
   const bool moving = linear && !nodes.empty();
@@ -450,7 +669,8 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
   }
   std::vector<DiagonalSlabs> slabs;
   if (options.kdop_bvh && !nodes.empty()) slabs = nodeDiagonalSlabs(objects, prims, nodes, refs);
-  WideFlattener(objects, nodes, refs, moving ? &motion : nullptr, slabs.empty() ? nullptr : &slabs, out)
+  const std::vector<PacketRange> leaf_packets = writeLeafPackets(objects, nodes, refs, budget, out.packets);
+  WideFlattener(nodes, leaf_packets, moving ? &motion : nullptr, slabs.empty() ? nullptr : &slabs, out)
       .run(prims.scene.area());
   out.stats.references = refs.size();
   out.stats.mean_prims_per_leaf = out.stats.leaf_count ? double(refs.size()) / out.stats.leaf_count : 0;

@@ -64,14 +64,23 @@ PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::
   range.start = static_cast<std::uint32_t>(out.size());
   // Static triangles four to a packet.
   int lane = PACKET_LANES;
+  std::size_t others = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const ObjectGpu& ob = objects[ids[i]];
-    if (!isPacketTriangle(ob)) continue;
+    if (!isPacketTriangle(ob)) {
+      ++others;
+      continue;
+    }
     if (lane == PACKET_LANES) {
       out.push_back(emptyPacket());
       lane = 0;
     }
     putTriangle(out.back(), lane++, ob, ids[i]);
+  }
+  // A mesh's leaves hold nothing else: done without the passes below.
+  if (others == 0) {
+    range.count = static_cast<std::uint32_t>(out.size() - range.start);
+    return range;
   }
   // Moving triangles, four of one motion record to a packet.
   std::vector<bool> placed(n, false);

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string>
 
+#include "accel/task_group.h"
 #include "kernels/shared/mesh_gpu.h"
 #include "kernels/shared/motion_gpu.h"
 #include "scene/motion.h"
@@ -171,10 +172,9 @@ double floatPad(const Box3& b) {
 
 // The float box just outside [lo - pad, hi + pad]; false if it does not fit a float.
 bool toAabb(const double lo[3], const double hi[3], double pad, Aabb* out) {
-  const float inf = std::numeric_limits<float>::infinity();
   for (int a = 0; a < 3; ++a) {
-    out->lo[a] = std::nextafter(roundDown(lo[a] - pad), -inf);
-    out->hi[a] = std::nextafter(roundUp(hi[a] + pad), inf);
+    out->lo[a] = nextFloatDown(roundDown(lo[a] - pad));
+    out->hi[a] = nextFloatUp(roundUp(hi[a] + pad));
     if (!std::isfinite(out->lo[a]) || !std::isfinite(out->hi[a])) return false;
   }
   return true;
@@ -230,10 +230,9 @@ bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
       hi[a] += pad;
     }
   }
-  const float inf = std::numeric_limits<float>::infinity();
   for (int a = 0; a < 3; ++a) {
-    bounds->lo[a] = std::nextafter(roundDown(lo[a]), -inf);
-    bounds->hi[a] = std::nextafter(roundUp(hi[a]), inf);
+    bounds->lo[a] = nextFloatDown(roundDown(lo[a]));
+    bounds->hi[a] = nextFloatUp(roundUp(hi[a]));
     if (!std::isfinite(bounds->lo[a]) || !std::isfinite(bounds->hi[a])) return false;
   }
   return true;
@@ -260,16 +259,39 @@ bool objectLinearBounds(const ObjectGpu& ob, Aabb* open, Aabb* close) {
   return true;
 }
 
-PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects) {
+PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads) {
   PrimitiveSet set;
-  set.bounded.reserve(objects.size());
-  set.bounds.reserve(objects.size());
   const std::size_t count = primitiveCount(objects);
-  for (std::size_t i = 0; i < count; ++i) {
+  // The static objects' boxes first, on every thread in contiguous runs, each
+  // into its own arrays (the bounds are most of the work, and the arrays' first
+  // writes cost page faults, which the threads then share); moving objects are
+  // bounded below, in order.
+  ThreadBudget budget(threads);
+  const std::size_t runs = count >= kParallelBoundsPrims ? static_cast<std::size_t>(budget.total()) : 1;
+  std::vector<std::vector<Aabb>> run_boxes(runs);
+  std::vector<std::vector<unsigned char>> run_finite(runs);
+  {
+    auto boundRun = [&](std::size_t r) {
+      const std::size_t first = count * r / runs, end = count * (r + 1) / runs;
+      run_boxes[r].resize(end - first);
+      run_finite[r].resize(end - first);
+      for (std::size_t i = first; i < end; ++i)
+        if (objects[i].has_transform != OBJECT_MOVING)
+          run_finite[r][i - first] = objectBounds(objects[i], &run_boxes[r][i - first]);
+    };
+    TaskGroup group(budget);
+    for (std::size_t r = 1; r < runs; ++r) group.run([&boundRun, r] { boundRun(r); }, true);
+    boundRun(0);
+    group.wait();
+  }
+  set.bounded.reserve(count);
+  set.bounds.reserve(count);
+  for (std::size_t i = 0, r = 0, first = 0; i < count; ++i) {
+    while (i >= count * (r + 1) / runs) first = count * ++r / runs;
     const ObjectGpu& ob = objects[i];
     const bool moves = ob.has_transform == OBJECT_MOVING;
-    Aabb b, open, close;
-    if (moves ? movingBounds(ob, &b, &open, &close) : objectBounds(ob, &b)) {
+    Aabb b = run_boxes[r][i - first], open, close;
+    if (moves ? movingBounds(ob, &b, &open, &close) : run_finite[r][i - first] != 0) {
       if (moves && !set.moving) {  // the first moving one: the static ones so far keep one box
         set.moving = true;
         set.shutter_open = motionOf(ob).shutter_open;
@@ -299,19 +321,16 @@ std::size_t primitiveCount(const std::vector<ObjectGpu>& objects) {
   return n;
 }
 
-std::string kindsKernelOption(const std::vector<ObjectGpu>& objects) {
+std::string primitiveKernelOptions(const std::vector<ObjectGpu>& objects) {
   unsigned kinds = 1u << OBJECT_SPHERE | 1u << OBJECT_BOX | 1u << OBJECT_PLANE | 1u << OBJECT_TRIANGLE;
+  bool moving = false;
   const std::size_t count = primitiveCount(objects);
-  for (std::size_t i = 0; i < count; ++i)
+  for (std::size_t i = 0; i < count; ++i) {
     if (objects[i].type >= 0 && objects[i].type < 32) kinds |= 1u << objects[i].type;
-  return "-DPRISM_KINDS=" + std::to_string(kinds);
-}
-
-bool anyMoving(const std::vector<ObjectGpu>& objects) {
-  const std::size_t count = primitiveCount(objects);
-  for (std::size_t i = 0; i < count; ++i)
-    if (objects[i].has_transform == OBJECT_MOVING) return true;
-  return false;
+    moving = moving || objects[i].has_transform == OBJECT_MOVING;
+  }
+  std::string options = moving ? std::string(kMotionKernelOption) + " " : std::string();
+  return options + "-DPRISM_KINDS=" + std::to_string(kinds);
 }
 
 }  // namespace prism

@@ -36,16 +36,22 @@ struct PrimitiveSet {
   std::vector<Aabb> bounds_open, bounds_close;
 };
 
-PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects);
+// The primitives' boxes, computed on `threads` threads (0: every core) for
+// scenes of at least kParallelBoundsPrims; the result does not depend on it.
+constexpr std::size_t kParallelBoundsPrims = 16384;
+PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads = 0);
 
 // The primitives of an object array: the entries before the mesh headers,
 // motion and data records that close it (kernels/shared/motion_gpu.h, object_gpu.h), if any.
 std::size_t primitiveCount(const std::vector<ObjectGpu>& objects);
-// Whether some primitive moves (the kernels then need kMotionKernelOption).
-bool anyMoving(const std::vector<ObjectGpu>& objects);
-// The build option naming the primitive kinds the kernels must intersect
-// (-DPRISM_KINDS, kernels/geometry/object.h): spheres, boxes, planes and
-// triangles always, the larger kinds only where the scene has some.
-std::string kindsKernelOption(const std::vector<ObjectGpu>& objects);
+// The kernel build option that compiles moving objects' intersection
+// (kernels/geometry/motion.h); programs without it never see a moving object.
+constexpr const char* kMotionKernelOption = "-DPRISM_MOTION";
+
+// The build options the primitives ask of the kernels, from one pass over
+// them: kMotionKernelOption where some primitive moves, and -DPRISM_KINDS
+// (kernels/geometry/object.h) naming the kinds to intersect: spheres, boxes,
+// planes and triangles always, the larger kinds only where the scene has some.
+std::string primitiveKernelOptions(const std::vector<ObjectGpu>& objects);
 
 }  // namespace prism

@@ -33,8 +33,7 @@ void FirstHitPass::prepare(const GpuScene& scene) {
                                 " lacks cl_khr_int64_extended_atomics");
   m_wide = m_atomics == ZBufferAtomics::Wide || (m_atomics == ZBufferAtomics::Auto && has_wide);
   std::string options = m_wide ? "-DPRISM_ZBUFFER_WIDE" : "";
-  if (anyMoving(scene.objects)) options += std::string(" ") + kMotionKernelOption;
-  options += " " + kindsKernelOption(scene.objects);
+  options += " " + primitiveKernelOptions(scene.objects);
   m_count_cells = m_context.kernel("firsthit.cl", "firsthit_count_cells", options);
   m_sort_samples = m_context.kernel("firsthit.cl", "firsthit_sort_samples", options);
   m_pixel_counts = m_context.kernel("firsthit.cl", "firsthit_pixel_counts", options);
