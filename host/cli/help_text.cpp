@@ -171,7 +171,8 @@ Animation (a scene with an "animation" block of frames):
                     frame number (-o shot_###.png: shot_007.png), else _NNNN goes
                     before the extension (-o shot.png: shot_0007.png). Under
                     mpirun the frames are dealt whole to the ranks, each writing
-                    its own
+                    its own; the last frames, fewer than the ranks, are each
+                    shared by a group of ranks
 
 Messages:
   --stats           after the summary, where the render's time went: set-up (kernels,

@@ -15,6 +15,13 @@
 namespace prism_cli {
 namespace {
 
+PrismFrameParts partsAlone() {
+  PrismFrameParts parts{};
+  parts.struct_size = sizeof parts;
+  parts.parts = 1;
+  return parts;
+}
+
 // Set by mpirun (OpenMPI), or by other launchers through PMI/PMIx.
 std::uint32_t launchedRanks() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"}) {
@@ -27,60 +34,81 @@ std::uint32_t launchedRanks() {
 bool g_started = false;
 bool g_rendered = false;
 bool g_alone = false;  // ranks render whole frames each (ranksWorkAlone)
+bool g_owes_part = false;  // this rank has yet to render its part of a shared frame
 Ranks g_ranks;
 MPI_Comm g_comm = MPI_COMM_NULL;  // prism's own, so that its tags meet no one else's
+
+// The ranks sharing a frame, as PrismFrameParts.user: all of them (a still), or
+// a group sharing one of an animation's last frames.
+struct PartsComm {
+  MPI_Comm comm = MPI_COMM_NULL;
+  int rank = 0, size = 1;
+};
+PartsComm g_all, g_group;
 
 // MPI counts in int: large exchanges go in pieces.
 constexpr std::uint64_t kPiece = 1u << 30;
 
-void sendBytes(const void* data, std::uint64_t size, int to) {
-  MPI_Send(&size, 1, MPI_UINT64_T, to, 0, g_comm);
+void sendBytes(MPI_Comm comm, const void* data, std::uint64_t size, int to) {
+  MPI_Send(&size, 1, MPI_UINT64_T, to, 0, comm);
   const auto* bytes = static_cast<const char*>(data);
   for (std::uint64_t at = 0; at < size; at += kPiece)
-    MPI_Send(bytes + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, to, 1, g_comm);
+    MPI_Send(bytes + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, to, 1, comm);
 }
 
-std::vector<char> receiveBytes(int from) {
+std::vector<char> receiveBytes(MPI_Comm comm, int from) {
   std::uint64_t size = 0;
-  MPI_Recv(&size, 1, MPI_UINT64_T, from, 0, g_comm, MPI_STATUS_IGNORE);
+  MPI_Recv(&size, 1, MPI_UINT64_T, from, 0, comm, MPI_STATUS_IGNORE);
   std::vector<char> bytes(size);
   for (std::uint64_t at = 0; at < size; at += kPiece)
-    MPI_Recv(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, from, 1, g_comm,
+    MPI_Recv(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, from, 1, comm,
              MPI_STATUS_IGNORE);
   return bytes;
 }
 
-void broadcastBytes(std::vector<char>& bytes, int root) {
+void broadcastBytes(MPI_Comm comm, std::vector<char>& bytes, int root) {
   std::uint64_t size = bytes.size();
-  MPI_Bcast(&size, 1, MPI_UINT64_T, root, g_comm);
+  MPI_Bcast(&size, 1, MPI_UINT64_T, root, comm);
   bytes.resize(size);
   for (std::uint64_t at = 0; at < size; at += kPiece)
-    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, root, g_comm);
+    MPI_Bcast(bytes.data() + at, static_cast<int>(std::min(kPiece, size - at)), MPI_BYTE, root, comm);
 }
 
-// PrismFrameParts.exchange over prism's duplicate of MPI_COMM_WORLD. MPI's own errors end the run
-// (MPI_ERRORS_ARE_FATAL), so a return here is a success.
-int exchange(void*, int to_all, const void* data, std::uint64_t size, PrismReceiveFn receive, void* receiver) {
-  const int rank = static_cast<int>(g_ranks.rank), ranks = static_cast<int>(g_ranks.size);
+// PrismFrameParts.exchange over the PartsComm in `user`. MPI's own errors end
+// the run (MPI_ERRORS_ARE_FATAL), so a return here is a success.
+int exchange(void* user, int to_all, const void* data, std::uint64_t size, PrismReceiveFn receive, void* receiver) {
+  const PartsComm& parts = *static_cast<const PartsComm*>(user);
   if (to_all) {
-    for (int p = 0; p < ranks; ++p) {
+    for (int p = 0; p < parts.size; ++p) {
       std::vector<char> bytes;
-      if (p == rank) bytes.assign(static_cast<const char*>(data), static_cast<const char*>(data) + size);
-      broadcastBytes(bytes, p);
+      if (p == parts.rank) bytes.assign(static_cast<const char*>(data), static_cast<const char*>(data) + size);
+      broadcastBytes(parts.comm, bytes, p);
       receive(receiver, static_cast<std::uint32_t>(p), bytes.data(), bytes.size());
     }
     return 0;
   }
-  if (rank != 0) {
-    sendBytes(data, size, 0);
+  if (parts.rank != 0) {
+    sendBytes(parts.comm, data, size, 0);
     return 0;
   }
   receive(receiver, 0, data, size);
-  for (int p = 1; p < ranks; ++p) {
-    const std::vector<char> bytes = receiveBytes(p);
+  for (int p = 1; p < parts.size; ++p) {
+    const std::vector<char> bytes = receiveBytes(parts.comm, p);
     receive(receiver, static_cast<std::uint32_t>(p), bytes.data(), bytes.size());
   }
   return 0;
+}
+
+PrismFrameParts partsOver(PartsComm& comm) {
+  PrismFrameParts parts{};
+  parts.struct_size = sizeof parts;
+  parts.part = static_cast<std::uint32_t>(comm.rank);
+  parts.parts = static_cast<std::uint32_t>(comm.size);
+  if (comm.size > 1) {
+    parts.exchange = exchange;
+    parts.user = &comm;
+  }
+  return parts;
 }
 #endif
 
@@ -104,8 +132,30 @@ Ranks startRanks() {
   MPI_Comm_size(g_comm, &size);
   g_ranks.rank = static_cast<std::uint32_t>(rank);
   g_ranks.size = static_cast<std::uint32_t>(size);
+  g_all = PartsComm{g_comm, rank, size};
   return g_ranks;
 }
+
+PrismFrameParts frameParts(const Ranks& ranks) {
+  if (!g_started || !ranks.shared()) return partsAlone();
+  return partsOver(g_all);
+}
+
+PrismFrameParts groupFrameParts(const FrameDeal& deal) {
+  if (!g_started) return partsAlone();
+  MPI_Comm_split(g_comm, deal.shares ? static_cast<int>(deal.group) : MPI_UNDEFINED, static_cast<int>(g_ranks.rank),
+                 &g_group.comm);
+  if (!deal.shares) return partsAlone();
+  MPI_Comm_rank(g_group.comm, &g_group.rank);
+  MPI_Comm_size(g_group.comm, &g_group.size);
+  if (static_cast<std::uint32_t>(g_group.rank) != deal.group_part ||
+      static_cast<std::uint32_t>(g_group.size) != deal.group_parts)
+    throw std::logic_error("MPI made a group other than the frame deal's");
+  g_owes_part = g_group.size > 1;
+  return partsOver(g_group);
+}
+
+void sharedPartRendered() { g_owes_part = false; }
 
 void frameRendered() { g_rendered = true; }
 void ranksWorkAlone() {
@@ -115,13 +165,15 @@ void ranksWorkAlone() {
 
 int endRanks(int code) {
   if (!g_started) return code;
-  if (code != 0 && g_ranks.shared() && !g_rendered) MPI_Abort(MPI_COMM_WORLD, code);
+  // So does one that fails before its part of a frame it shares with others.
+  if (code != 0 && g_ranks.shared() && (!g_rendered || g_owes_part)) MPI_Abort(MPI_COMM_WORLD, code);
   // Ranks that work alone wait for each other before any exits: mpirun ends
   // the whole job when one rank exits with a failure, frames half done.
   if (g_alone && g_ranks.shared()) {
     int worst = 0;
     MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, g_comm);
   }
+  if (g_group.comm != MPI_COMM_NULL) MPI_Comm_free(&g_group.comm);
   MPI_Comm_free(&g_comm);
   MPI_Finalize();
   g_started = false;
@@ -138,19 +190,11 @@ Ranks startRanks() {
 
 void frameRendered() {}
 void ranksWorkAlone() {}
+PrismFrameParts frameParts(const Ranks&) { return partsAlone(); }
+PrismFrameParts groupFrameParts(const FrameDeal&) { return partsAlone(); }
+void sharedPartRendered() {}
 
 int endRanks(int code) { return code; }
 #endif
-
-PrismFrameParts frameParts(const Ranks& ranks) {
-  PrismFrameParts parts{};
-  parts.struct_size = sizeof parts;
-  parts.part = ranks.rank;
-  parts.parts = ranks.size;
-#ifdef PRISM_WITH_MPI
-  if (ranks.shared()) parts.exchange = exchange;
-#endif
-  return parts;
-}
 
 }  // namespace prism_cli

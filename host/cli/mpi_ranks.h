@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "prism.h"
+#include "frame_deal.h"
 
 namespace prism_cli {
 
@@ -21,8 +22,17 @@ struct Ranks {
 // Throws UsageError when mpirun launched several ranks of a build without MPI
 // (each would render and write the whole frame).
 Ranks startRanks();
-// The frame parts for prismSetFrameParts (one part alone).
+// The frame parts for prismSetFrameParts: every rank sharing each frame (one
+// part alone without MPI).
 PrismFrameParts frameParts(const Ranks& ranks);
+// The frame parts of the group of ranks that shares one of an animation's last
+// frames (deal.shares; dealFrames), over a communicator of their own.
+// Collective: every rank calls it once, before rendering anything, when the
+// deal leaves frames over (a rank that shares none gets one part alone). Until
+// sharedPartRendered, a failure of this rank ends the run (endRanks), since
+// the others of its group would wait for its part.
+PrismFrameParts groupFrameParts(const FrameDeal& deal);
+void sharedPartRendered();
 // Says the shared frame is rendered: the ranks wait for each other no more.
 void frameRendered();
 // Says the ranks render whole frames each (an animation's): none waits for
@@ -30,8 +40,8 @@ void frameRendered();
 // every rank waits for all, so that mpirun ends none of them early.
 void ranksWorkAlone();
 // Ends MPI. With several ranks, a failure (exit code not 0) before the frame was
-// rendered ends every rank (MPI_Abort), since the others would wait for this one
-// forever; after it (rank 0's --check-nan finding, a write that fails) the code
+// rendered, or before this rank's part of a shared frame, ends every rank
+// (MPI_Abort), since the others would wait for this one forever; after it (rank 0's --check-nan finding, a write that fails) the code
 // is returned as it is. Returns `code`.
 int endRanks(int code);
 

@@ -457,13 +457,23 @@ int runRender(const std::vector<std::string>& args) {
   const ContextHandle context(raw_context);
   std::string devices = devicesText(context.get());
 
-  // Under mpirun, the frames of an animation are dealt whole to the ranks (the
-  // k-th frame rendered to rank k mod N), each writing its own; a single frame
-  // is shared by the ranks and written by rank 0.
+  // Under mpirun, an animation's frames are dealt to the ranks (frame_deal.h):
+  // whole frames in turns, each rank writing its own, then the frames left
+  // over each shared by a group of ranks, its first rank writing it; a single
+  // frame is shared by all the ranks and written by rank 0.
   const bool deal_frames = ranks.shared() && frames.count() > 1;
+  const FrameDeal deal = dealFrames(frames.count(), deal_frames ? ranks.rank : 0, deal_frames ? ranks.size : 1);
+  PrismFrameParts group_parts{};
+  std::string group_devices;
   if (deal_frames) {
     ranksWorkAlone();
-    devices = "MPI rank " + std::to_string(ranks.rank) + " of " + std::to_string(ranks.size) + " (" + devices + ")";
+    if (frames.count() % ranks.size != 0) group_parts = groupFrameParts(deal);  // every rank, before any frame
+    const std::string alone =
+        "MPI rank " + std::to_string(ranks.rank) + " of " + std::to_string(ranks.size) + " (" + devices + ")";
+    group_devices = deal.group_parts > 1 ? std::to_string(deal.group_parts) + " MPI ranks (rank " +
+                                               std::to_string(ranks.rank) + " on " + devices + ")"
+                                         : alone;
+    devices = alone;
   } else if (ranks.shared()) {
     // Every rank renders its part of the frame; rank 0 writes it and reports.
     const PrismFrameParts parts = frameParts(ranks);
@@ -483,8 +493,7 @@ int runRender(const std::vector<std::string>& args) {
   // One guard for all frames: a Ctrl-C between two frames stops the next.
   const InterruptGuard interrupt;
   int outcome = kExitOk;
-  const uint32_t stride = deal_frames ? ranks.size : 1;
-  for (uint32_t frame = frames.first + (deal_frames ? ranks.rank : 0); frame <= frames.last; frame += stride) {
+  auto render = [&](const FrameOutput& out, uint32_t frame) {
     if (InterruptGuard::requested()) {
       std::fprintf(stderr, "prism: interrupted; frame %u and those after it not written\n",
                    static_cast<unsigned>(frame));
@@ -496,12 +505,21 @@ int runRender(const std::vector<std::string>& args) {
       if (prismGetFrameScene(scene.get(), frame, &raw_frame) != PRISM_OK) return failWithLastError();
       frame_scene.reset(raw_frame);
     }
-    const int code = renderFrame(output, context.get(), frame_scene ? frame_scene.get() : scene.get(), frame);
+    const int code = renderFrame(out, context.get(), frame_scene ? frame_scene.get() : scene.get(), frame);
     if (code == kExitNotFinite) {
       outcome = code;  // the image is written; the other frames still are
-      continue;
+      return kExitOk;
     }
-    if (code != kExitOk) return code;
+    return code;
+  };
+  for (uint32_t k : deal.whole)
+    if (const int code = render(output, frames.first + k); code != kExitOk) return code;
+  if (deal.shares) {
+    // The group's first rank writes and reports the frame; the others render their part.
+    if (prismSetFrameParts(context.get(), &group_parts) != PRISM_OK) return failWithLastError();
+    const FrameOutput shared{request, options, group_devices, deal.group_part == 0, speaks, frames.total};
+    if (const int code = render(shared, frames.first + deal.shared_frame); code != kExitOk) return code;
+    sharedPartRendered();
   }
   return outcome;
 }

@@ -5,7 +5,8 @@
 # and with several devices in each rank; rank 0 alone reports; ranks started
 # with different options are refused; a rank that fails ends the run with an
 # error instead of leaving the others waiting; an animation's frames are dealt
-# whole to the ranks, each frame the same bits as one process's.
+# to the ranks (whole, then the last ones shared by groups), each frame the same
+# bits as one process's.
 # Run as: cmake -DPRISM=<exe> -DMPIEXEC=<mpirun> -DSOURCE_DIR=<repo> -DWORK_DIR=<scratch> -P mpi.cmake
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -97,9 +98,11 @@ if(rc EQUAL 0 OR NOT err MATCHES "9")
   message(FATAL_ERROR "a rank that fails must end the run with its error (exit ${rc}):\n${out}${err}")
 endif()
 
-# An animation's frames are dealt whole to the ranks (frame k of those rendered
-# to rank k mod N), each writing its own: the same bytes as one process's frames,
-# and each rank reports the frames it rendered.
+# An animation's frames are dealt to the ranks: whole while every rank can have
+# one (frame k of those to rank k mod N), each rank writing its own, then the
+# frames left over each shared by a group of ranks (host/cli/frame_deal.h); the
+# same bytes as one process's frames, and each frame reported once, by the rank
+# that wrote it.
 set(anim "${SOURCE_DIR}/scenes/animation.json")
 set(anim_small --width 48 --height 36 --spp 2 --device 0)
 set(anim_size ${anim_small} --frames 0-4)
@@ -107,20 +110,43 @@ run(${PRISM} render "${anim}" -o "${WORK_DIR}/anim_one.pfm" ${anim_size} --quiet
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the animation in one process exited ${rc}:\n${out}${err}")
 endif()
+# Counts the summary lines of `out` matching `pattern` (semicolons in the
+# summaries would split the matches).
+function(count_lines pattern var)
+  string(REPLACE ";" "," lines "${out}")
+  string(REGEX MATCHALL "${pattern}" found "${lines}")
+  list(LENGTH found n)
+  set(${var} ${n} PARENT_SCOPE)
+endfunction()
+# 2 ranks, 5 frames: 0 and 2 on rank 0, 1 and 3 on rank 1, frame 4 shared by both.
 run(${MPIEXEC} --oversubscribe -np 2 ${PRISM} render "${anim}" -o "${WORK_DIR}/anim_two.pfm" ${anim_size})
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the animation on 2 ranks exited ${rc}:\n${out}${err}")
 endif()
-string(REPLACE ";" "," lines "${out}")  # a summary's semicolons would split the matches
-string(REGEX MATCHALL "on MPI rank 1 of 2 [^\n]*anim_two_000[13]\\.pfm" rank1 "${lines}")
-string(REGEX MATCHALL "on MPI rank 0 of 2 [^\n]*anim_two_000[024]\\.pfm" rank0 "${lines}")
-list(LENGTH rank0 n0)
-list(LENGTH rank1 n1)
-if(NOT n0 EQUAL 3 OR NOT n1 EQUAL 2)
-  message(FATAL_ERROR "rank 0 must render frames 0, 2 and 4 and rank 1 frames 1 and 3, each saying so:\n${out}")
+count_lines("on MPI rank 0 of 2 [^\n]*anim_two_000[02]\\.pfm" n0)
+count_lines("on MPI rank 1 of 2 [^\n]*anim_two_000[13]\\.pfm" n1)
+count_lines("on 2 MPI ranks \\(rank 0 on [^\n]*anim_two_0004\\.pfm" n_shared)
+count_lines("prism: rendered" n_all)
+if(NOT n0 EQUAL 2 OR NOT n1 EQUAL 2 OR NOT n_shared EQUAL 1 OR NOT n_all EQUAL 5)
+  message(FATAL_ERROR "rank 0 must render frames 0 and 2, rank 1 frames 1 and 3, both frame 4, each reported once:\n${out}")
 endif()
 foreach(f 0000 0001 0002 0003 0004)
   same(anim_one_${f} anim_two_${f})
+endforeach()
+# 3 ranks, 5 frames: 0, 1 and 2 whole; frame 3 shared by ranks 0 and 2 (rank 0
+# writes it), frame 4 by rank 1 alone.
+run(${MPIEXEC} --oversubscribe -np 3 ${PRISM} render "${anim}" -o "${WORK_DIR}/anim_three.pfm" ${anim_size})
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the animation on 3 ranks exited ${rc}:\n${out}${err}")
+endif()
+count_lines("on 2 MPI ranks \\(rank 0 on [^\n]*anim_three_0003\\.pfm" n_shared)
+count_lines("on MPI rank 1 of 3 [^\n]*anim_three_000[14]\\.pfm" n1)
+count_lines("prism: rendered" n_all)
+if(NOT n_shared EQUAL 1 OR NOT n1 EQUAL 2 OR NOT n_all EQUAL 5)
+  message(FATAL_ERROR "frame 3 must be shared by ranks 0 and 2 and reported by rank 0, rank 1 must render frames 1 and 4, each reported once:\n${out}")
+endif()
+foreach(f 0000 0001 0002 0003 0004)
+  same(anim_one_${f} anim_three_${f})
 endforeach()
 
 # A rank that fails while the frames are dealt stops alone: rank 0 still renders
@@ -131,4 +157,15 @@ run(${MPIEXEC} --oversubscribe -np 1 ${PRISM} render "${anim}" -o "${WORK_DIR}/a
 if(rc EQUAL 0 OR NOT err MATCHES "does not exist on rank 1" OR NOT EXISTS "${WORK_DIR}/alone_0000.pfm"
    OR NOT EXISTS "${WORK_DIR}/alone_0002.pfm")
   message(FATAL_ERROR "a failing rank must stop alone, rank 0 writing frames 0 and 2, the run failing (exit ${rc}):\n${out}${err}")
+endif()
+
+# A rank that fails before its part of a frame it shares (frames 0-2 on 2
+# ranks: frame 2 is shared) ends the run with its error, rather than leaving
+# the other waiting for that part.
+run(${MPIEXEC} --oversubscribe -np 1 ${PRISM} render "${anim}" -o "${WORK_DIR}/owed.pfm" ${anim_small} --frames 0-2
+    --quiet : -np 1 ${PRISM} render "${anim}" -o "${WORK_DIR}/no-such-folder/owed.pfm" ${anim_small} --frames 0-2
+    --quiet)
+if(rc EQUAL 0 OR NOT rc MATCHES "^[0-9]+$" OR NOT err MATCHES "does not exist on rank 1"
+   OR EXISTS "${WORK_DIR}/owed_0002.pfm")
+  message(FATAL_ERROR "a rank failing before its part of a shared frame must end the run (exit ${rc}):\n${out}${err}")
 endif()
