@@ -126,10 +126,9 @@ RenderResult renderScene(PrismContext context, PrismScene scene, const PrismRend
   context->renderer->setFrameParts(context->parts);
   ProgressFn progress;
   if (context->progress) progress = [context](double f) { return context->progress(context->progress_user, f) == 0; };
-  // An animation renders its first frame here; prismGetFrameScene gives the others.
-  if (scene->scene.animation.frames > 1)
-    return context->renderer->render(sceneAtFrame(scene->scene, 0), opts, progress);
-  return context->renderer->render(scene->scene, opts, progress);  // FilmTooLarge: guarded() says OUT_OF_MEMORY
+  // FilmTooLarge: guarded() says OUT_OF_MEMORY.
+  return withFirstFrame(scene->scene,
+                        [&](const Scene& frame) { return context->renderer->render(frame, opts, progress); });
 }
 
 void fillStats(const RenderStats& from, double kernel_build_seconds, PrismRenderStats* stats) {
@@ -355,10 +354,7 @@ PRISM_API PrismStatus prismGetFrameScene(PrismScene scene, uint32_t frame, Prism
   *out_scene = nullptr;
   PRISM_REQUIRE(scene, "prismGetFrameScene: scene is NULL");
   return guarded(__func__, [&] {
-    if (frame >= static_cast<uint32_t>(scene->scene.animation.frames))
-      throw std::invalid_argument("frame " + std::to_string(frame) + " is not in the animation (frames 0 to " +
-                                  std::to_string(scene->scene.animation.frames - 1) + ")");
-    return loadInto(sceneAtFrame(scene->scene, static_cast<int>(frame)), out_scene);
+    return loadInto(sceneAtFrame(scene->scene, frame), out_scene);
   });
 }
 

@@ -22,8 +22,8 @@ RayQueryEngine& engineFor(PrismContext context, PrismScene scene, int accel) {
     context->queries.reset();
     // An animation answers as its frame 0, as prismRender renders it.
     const Scene& whole = scene->scene;
-    GpuScene gpu = whole.animation.frames > 1 ? flattenScene(sceneAtFrame(whole, 0), RenderOptions::fromScene(whole))
-                                              : flattenScene(whole, RenderOptions::fromScene(whole));
+    GpuScene gpu =
+        withFirstFrame(whole, [&](const Scene& frame) { return flattenScene(frame, RenderOptions::fromScene(whole)); });
     std::vector<MaterialGpu> materials = std::move(gpu.materials);
     context->queries = std::make_unique<RayQueryEngine>(
         *context->context, std::move(static_cast<SceneGeometry&>(gpu)), kind, std::move(materials));

@@ -46,11 +46,12 @@ double animationPhase(const Scene& scene, double t) {
   return end > start ? (t - start) / (end - start) : 0.0;
 }
 
-Scene sceneAtFrame(const Scene& scene, int frame) {
+Scene sceneAtFrame(const Scene& scene, std::uint32_t frame_number) {
   const int frames = scene.animation.frames;
-  if (frame < 0 || frame >= frames)
-    throw std::invalid_argument("frame " + std::to_string(frame) + " is not in the animation (frames 0 to " +
+  if (frames < 1 || frame_number >= static_cast<std::uint32_t>(frames))
+    throw std::invalid_argument("frame " + std::to_string(frame_number) + " is not in the animation (frames 0 to " +
                                 std::to_string(frames - 1) + ")");
+  const int frame = static_cast<int>(frame_number);  // below frames, an int
   if (const std::string problem = animationProblem(scene); !problem.empty()) throw std::invalid_argument(problem);
   if (frames == 1) return scene;
   Scene out = scene;

@@ -10,6 +10,7 @@
 // as it always has.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "scene/scene.h"
@@ -27,13 +28,22 @@ std::string animationProblem(const Scene& scene);
 // close) at time `t`; 0 throughout when the span has no length.
 double animationPhase(const Scene& scene, double t);
 
-// Frame `frame` (0-based, < scene.animation.frames) as a scene of one frame:
+// Frame `frame` (0-based, below scene.animation.frames) as a scene of one frame:
 // the shutter moved by frame x step, objects and camera placed on their path at
 // the new shutter's open and close (interpolated as scene/motion.h does, which
 // is the kernels' interpolation, so the piece follows the whole path); a frame
 // whose shutter has no length holds them still at its instant. With one frame,
 // the scene unchanged. Throws std::invalid_argument for a frame out of range, or
 // when the camera cannot form an image at this frame.
-Scene sceneAtFrame(const Scene& scene, int frame);
+Scene sceneAtFrame(const Scene& scene, std::uint32_t frame);
+
+// use(scene) for a still, use(its frame 0) for an animation: what the C API
+// renders and queries when handed a whole animation (prismGetFrameScene gives
+// the other frames). A still is passed as it is, not copied.
+template <typename Use>
+auto withFirstFrame(const Scene& scene, Use&& use) {
+  if (scene.animation.frames > 1) return use(sceneAtFrame(scene, 0));
+  return use(scene);
+}
 
 }  // namespace prism
