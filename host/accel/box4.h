@@ -51,11 +51,11 @@ struct Box4 {
     }
     return b;
   }
-  // Surface area, 0 for an empty box; products in double, as Aabb::area.
+  // Surface area, 0 for an empty box; in double, as Aabb::area, so that huge
+  // scenes do not overflow.
   double area() const {
-    const Float4 d = hi - lo;
-    if (!(d[0] >= 0 && d[1] >= 0 && d[2] >= 0)) return 0;
-    const double x = d[0], y = d[1], z = d[2];
+    const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
+    if (!(x >= 0 && y >= 0 && z >= 0)) return 0;
     return 2 * (x * y + y * z + z * x);
   }
 };

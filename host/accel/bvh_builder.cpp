@@ -89,36 +89,38 @@ struct RefExtent {
 
 // Centroid to bin, per axis, over a node's centroid bounds: the one
 // expression that both the binning and the partition use. A node of n
-// references gets min(n, kMaxBins) bins (at least kMinBins): more bins than
-// references only add empty ones to fill and sweep, and small nodes are most
-// of the tree.
+// references gets min(n, kMaxBins) bins: more bins than references only add
+// empty ones to fill and sweep, and small nodes are most of the tree.
 class BinMap {
  public:
-  static constexpr int kMaxBins = 32, kMinBins = 8;
+  static constexpr int kMaxBins = 32;
   BinMap(const Box4& centroids, int references)
-      : m_count(std::max(kMinBins, std::min(kMaxBins, references))), m_lo(xyzOnly(centroids.lo)) {
+      : m_count(std::max(1, std::min(kMaxBins, references))), m_lo(xyzOnly(centroids.lo)) {
     for (int a = 0; a < 3; ++a) {
       const float extent = centroids.hi[a] - centroids.lo[a];
-      m_usable[a] = extent > 0 && std::isfinite(extent);
-      m_scale[a] = m_usable[a] ? float(m_count * (1 - 1e-6)) / extent : 0.0f;
+      m_scale[a] = extent > 0 ? float(m_count * (1 - 1e-6)) / extent : 0.0f;
+      // An extent too small for its reciprocal to be a float cannot be binned.
+      m_usable[a] = extent > 0 && std::isfinite(extent) && std::isfinite(m_scale[a]);
+      if (!m_usable[a]) m_scale[a] = 0.0f;
     }
     m_scale[3] = 0.0f;
-    m_top = Int4{m_count - 1, m_count - 1, m_count - 1, 0};
+    const float top = static_cast<float>(m_count - 1);
+    m_top = Float4{top, top, top, 0.0f};
   }
   int count() const { return m_count; }
   bool usable(int axis) const { return m_usable[axis]; }
-  // Bins of r's centroid on the three axes (lane 3: 0).
+  // Bins of r's centroid on the three axes (lane 3: 0). Clamped in float, NaN
+  // to 0, before the conversion, which is only defined for values that fit.
   Int4 bins(const PrimRef& r) const {
-    const Int4 b = __builtin_convertvector(xyzOnly((r.centroid4() - m_lo) * m_scale), Int4);
-    const Int4 zero = {0, 0, 0, 0};
-    const Int4 clamped = b < zero ? zero : b;
-    return clamped > m_top ? m_top : clamped;
+    const Float4 x = xyzOnly((r.centroid4() - m_lo) * m_scale);
+    const Float4 zero = {0, 0, 0, 0};
+    const Float4 low = x >= zero ? x : zero;
+    return __builtin_convertvector(low < m_top ? low : m_top, Int4);
   }
 
  private:
   int m_count;
-  Float4 m_lo, m_scale = {0, 0, 0, 0};
-  Int4 m_top;
+  Float4 m_lo, m_scale = {0, 0, 0, 0}, m_top;
   bool m_usable[3];
 };
 
@@ -173,7 +175,10 @@ class Bvh2Builder {
     m_scratch.resize(m_refs.size());
     m_next = 1;
     buildNode(0, 0, n, 0, all);
-    return std::vector<Node2>(node(0), node(0) + m_next.load());
+    std::vector<Node2> nodes;
+    nodes.reserve(m_next.load());
+    for (int i = 0; i < m_next.load(); ++i) nodes.push_back(*node(i));
+    return nodes;
   }
 
  private:
@@ -413,7 +418,7 @@ std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects,
   for (std::int32_t leaf : leaf_at)
     if (leaf >= 0) leaves.push_back(leaf);
 
-  const std::size_t runs = std::max(1, budget.total());
+  const std::size_t runs = refs.size() >= kParallelBoundsPrims ? static_cast<std::size_t>(budget.total()) : 1;
   std::vector<std::size_t> run_start(runs + 1, leaves.size());
   run_start[0] = 0;
   for (std::size_t r = 1, leaf = 0; r < runs; ++r) {
@@ -424,8 +429,9 @@ std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects,
   std::vector<std::vector<TriPacketGpu>> run_packets(runs);
   auto writeRun = [&](std::size_t r) {
     std::vector<TriPacketGpu>& out = run_packets[r];
-    // A leaf of n triangles takes ceil(n / 4) packets, at most n / 4 + 1; the
-    // first run makes room for every run's, as the others are joined onto it.
+    // A leaf of n triangles takes ceil(n / 4) packets, at most n / 4 + 1 (a
+    // leaf mixing kinds may take more: only the room's first guess); the first
+    // run makes room for every run's, as the others are joined onto it.
     const std::size_t leaves_in = r == 0 ? leaves.size() : run_start[r + 1] - run_start[r];
     const std::size_t refs_in = r == 0 ? refs.size() : refs.size() / runs + 1;
     out.reserve(refs_in / PACKET_LANES + leaves_in);

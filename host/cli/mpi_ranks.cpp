@@ -148,16 +148,15 @@ PrismFrameParts groupFrameParts(const FrameDeal& deal) {
   if (!deal.shares) return partsAlone();
   MPI_Comm_rank(g_group.comm, &g_group.rank);
   MPI_Comm_size(g_group.comm, &g_group.size);
+  g_owes_part = g_group.size > 1;  // before anything can fail: the group waits for this rank
   if (static_cast<std::uint32_t>(g_group.rank) != deal.group_part ||
       static_cast<std::uint32_t>(g_group.size) != deal.group_parts)
     throw std::logic_error("MPI made a group other than the frame deal's");
-  g_owes_part = g_group.size > 1;
   return partsOver(g_group);
 }
 
-void sharedPartRendered() { g_owes_part = false; }
-
 void frameRendered() { g_rendered = true; }
+void sharedPartRendered() { g_owes_part = false; }
 void ranksWorkAlone() {
   g_rendered = true;
   g_alone = true;

@@ -29,20 +29,24 @@ PrismFrameParts frameParts(const Ranks& ranks);
 // frames (deal.shares; dealFrames), over a communicator of their own.
 // Collective: every rank calls it once, before rendering anything, when the
 // deal leaves frames over (a rank that shares none gets one part alone). Until
-// sharedPartRendered, a failure of this rank ends the run (endRanks), since
-// the others of its group would wait for its part.
+// sharedPartRendered, a failure of this rank ends the run (endRanks), since the
+// others of its group would wait for its part.
 PrismFrameParts groupFrameParts(const FrameDeal& deal);
+// Says the group's frame is rendered (prismRender returned, every part's share
+// in): a failure after it, such as a write, leaves no one waiting.
 void sharedPartRendered();
 // Says the shared frame is rendered: the ranks wait for each other no more.
 void frameRendered();
 // Says the ranks render whole frames each (an animation's): none waits for
-// another while rendering, so one that fails stops alone; at the end (endRanks)
-// every rank waits for all, so that mpirun ends none of them early.
+// another while rendering, so one that fails stops alone (unless it owes a
+// part of a shared frame, groupFrameParts); at the end (endRanks) every rank
+// waits for all, so that mpirun ends none of them early.
 void ranksWorkAlone();
 // Ends MPI. With several ranks, a failure (exit code not 0) before the frame was
 // rendered, or before this rank's part of a shared frame, ends every rank
-// (MPI_Abort), since the others would wait for this one forever; after it (rank 0's --check-nan finding, a write that fails) the code
-// is returned as it is. Returns `code`.
+// (MPI_Abort), since the others would wait for this one forever; after it
+// (rank 0's --check-nan finding, a write that fails) the code is returned as
+// it is. Returns `code`.
 int endRanks(int code);
 
 }  // namespace prism_cli

@@ -344,6 +344,7 @@ struct FrameOutput {
   bool speaks;
   bool progress;
   uint32_t frames;
+  bool shared_part = false;  // the frame is shared by a group of ranks (sharedPartRendered once rendered)
 };
 
 // Renders one frame and, where this process reports, writes it and prints its
@@ -371,6 +372,7 @@ int renderFrame(const FrameOutput& out, PrismContext context, PrismScene scene, 
   }
   if (status != PRISM_OK) return failWithLastError();
   frameRendered();
+  if (out.shared_part) sharedPartRendered();
   if (!out.speaks) return kExitOk;
   uint32_t warnings = 0;
   prismGetRenderWarningCount(context, &warnings);
@@ -481,8 +483,9 @@ int runRender(const std::vector<std::string>& args) {
     devices = std::to_string(ranks.size) + " MPI ranks (rank 0 on " + devices + ")";
   }
 
-  // Each rank writes its own frames, so each checks where they go (rank 0 did).
-  if (deal_frames && !speaks && !outputFolderExists(request.output_path)) {
+  // Each rank that writes frames checks where they go (rank 0 did).
+  const bool writes = !deal.whole.empty() || (deal.shares && deal.group_part == 0);
+  if (deal_frames && !speaks && writes && !outputFolderExists(request.output_path)) {
     printError("cannot write '" + request.output_path + "': folder '" +
                std::filesystem::path(request.output_path).parent_path().string() + "' does not exist on rank " +
                std::to_string(ranks.rank));
@@ -517,9 +520,8 @@ int runRender(const std::vector<std::string>& args) {
   if (deal.shares) {
     // The group's first rank writes and reports the frame; the others render their part.
     if (prismSetFrameParts(context.get(), &group_parts) != PRISM_OK) return failWithLastError();
-    const FrameOutput shared{request, options, group_devices, deal.group_part == 0, speaks, frames.total};
+    const FrameOutput shared{request, options, group_devices, deal.group_part == 0, speaks, frames.total, true};
     if (const int code = render(shared, frames.first + deal.shared_frame); code != kExitOk) return code;
-    sharedPartRendered();
   }
   return outcome;
 }

@@ -12,7 +12,7 @@
 #include "shared/object_gpu.h"
 
 /* The kinds compiled in, bit k for OBJECT_k. The host passes the scene's
- * (-DPRISM_KINDS, host: kindsKernelOption), so the programs of a scene without
+ * (-DPRISM_KINDS, host: primitiveKernelOptions), so the programs of a scene without
  * quadrics, polygons, polyhedra or patches leave their code out: PoCL's build
  * time grows with the code, and a cold start pays it. Spheres, boxes, planes
  * and triangles are small and always in; without the option, every kind is. */

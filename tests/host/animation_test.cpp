@@ -151,7 +151,7 @@ TEST_CASE("animations the format refuses, and frames whose camera cannot form an
                                  "through.json");
   CHECK_NOTHROW(sceneAtFrame(scene, 1));
   CHECK_THROWS_WITH(sceneAtFrame(scene, 2), Catch::Contains("frame 2 of the animation: the camera's position and look_at"));
-  CHECK_THROWS_WITH(sceneAtFrame(scene, -1), Catch::Contains("not in the animation"));
+  CHECK_THROWS_WITH(sceneAtFrame(scene, 4294967295u), Catch::Contains("frame 4294967295 is not in the animation"));
   // A mirror image by the end: the stretch passes through 0 at the middle frame.
   const Scene flip = parseScene(R"({
     "animation": {"frames": 3},
