@@ -118,11 +118,20 @@ function(count_lines pattern var)
   list(LENGTH found n)
   set(${var} ${n} PARENT_SCOPE)
 endfunction()
-# 2 ranks, 5 frames: 0 and 2 on rank 0, 1 and 3 on rank 1, frame 4 shared by both.
-run(${MPIEXEC} --oversubscribe -np 2 ${PRISM} render "${anim}" -o "${WORK_DIR}/anim_two.pfm" ${anim_size})
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "the animation on 2 ranks exited ${rc}:\n${out}${err}")
-endif()
+# The animation's frames 0 to 4 on `ranks` ranks, as NAME_000k.pfm: each the
+# same bytes as one process's; `out` keeps the ranks' summaries.
+function(render_anim ranks name)
+  run(${MPIEXEC} --oversubscribe -np ${ranks} ${PRISM} render "${anim}" -o "${WORK_DIR}/${name}.pfm" ${anim_size})
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "the animation on ${ranks} ranks exited ${rc}:\n${out}${err}")
+  endif()
+  foreach(f 0000 0001 0002 0003 0004)
+    same(anim_one_${f} ${name}_${f})
+  endforeach()
+  set(out "${out}" PARENT_SCOPE)
+endfunction()
+# 2 ranks: frames 0 and 2 on rank 0, 1 and 3 on rank 1, frame 4 shared by both.
+render_anim(2 anim_two)
 count_lines("on MPI rank 0 of 2 [^\n]*anim_two_000[02]\\.pfm" n0)
 count_lines("on MPI rank 1 of 2 [^\n]*anim_two_000[13]\\.pfm" n1)
 count_lines("on 2 MPI ranks \\(rank 0 on [^\n]*anim_two_0004\\.pfm" n_shared)
@@ -130,24 +139,15 @@ count_lines("prism: rendered" n_all)
 if(NOT n0 EQUAL 2 OR NOT n1 EQUAL 2 OR NOT n_shared EQUAL 1 OR NOT n_all EQUAL 5)
   message(FATAL_ERROR "rank 0 must render frames 0 and 2, rank 1 frames 1 and 3, both frame 4, each reported once:\n${out}")
 endif()
-foreach(f 0000 0001 0002 0003 0004)
-  same(anim_one_${f} anim_two_${f})
-endforeach()
-# 3 ranks, 5 frames: 0, 1 and 2 whole; frame 3 shared by ranks 0 and 2 (rank 0
+# 3 ranks: frames 0, 1 and 2 whole; frame 3 shared by ranks 0 and 2 (rank 0
 # writes it), frame 4 by rank 1 alone.
-run(${MPIEXEC} --oversubscribe -np 3 ${PRISM} render "${anim}" -o "${WORK_DIR}/anim_three.pfm" ${anim_size})
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "the animation on 3 ranks exited ${rc}:\n${out}${err}")
-endif()
+render_anim(3 anim_three)
 count_lines("on 2 MPI ranks \\(rank 0 on [^\n]*anim_three_0003\\.pfm" n_shared)
 count_lines("on MPI rank 1 of 3 [^\n]*anim_three_000[14]\\.pfm" n1)
 count_lines("prism: rendered" n_all)
 if(NOT n_shared EQUAL 1 OR NOT n1 EQUAL 2 OR NOT n_all EQUAL 5)
   message(FATAL_ERROR "frame 3 must be shared by ranks 0 and 2 and reported by rank 0, rank 1 must render frames 1 and 4, each reported once:\n${out}")
 endif()
-foreach(f 0000 0001 0002 0003 0004)
-  same(anim_one_${f} anim_three_${f})
-endforeach()
 
 # A rank that fails while the frames are dealt stops alone: rank 0 still renders
 # and writes its frames (0 and 2), and the run reports the failure.
