@@ -418,11 +418,11 @@ std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects,
   for (std::int32_t leaf : leaf_at)
     if (leaf >= 0) leaves.push_back(leaf);
 
-  const std::size_t runs = refs.size() >= kParallelBoundsPrims ? static_cast<std::size_t>(budget.total()) : 1;
+  const std::size_t runs = runsFor(budget, refs.size(), kParallelBoundsPrims);
   std::vector<std::size_t> run_start(runs + 1, leaves.size());
   run_start[0] = 0;
   for (std::size_t r = 1, leaf = 0; r < runs; ++r) {
-    const std::size_t refs_before = refs.size() * r / runs;
+    const std::size_t refs_before = runRange(refs.size(), r, runs).first;
     while (leaf < leaves.size() && static_cast<std::size_t>(nodes[leaves[leaf]].first) < refs_before) ++leaf;
     run_start[r] = leaf;
   }
@@ -447,12 +447,7 @@ std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects,
       ranges[leaves[k]] = appendLeafPackets(objects, ids, leaf.count, out);
     }
   };
-  {
-    TaskGroup group(budget);
-    for (std::size_t r = 1; r < runs; ++r) group.run([&writeRun, r] { writeRun(r); }, true);
-    writeRun(0);
-    group.wait();
-  }
+  forEachRun(budget, runs, writeRun);
   std::size_t total = packets.size();
   for (const auto& run : run_packets) total += run.size();
   for (std::size_t r = 0; r < runs; ++r) {
@@ -638,10 +633,11 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
   // The references, and what they span, written on every thread in runs.
   PrimRefs refs(prims.bounded.size());
   ThreadBudget budget(options.threads);
-  const std::size_t runs = refs.size() >= kParallelBoundsPrims ? static_cast<std::size_t>(budget.total()) : 1;
+  const std::size_t runs = runsFor(budget, refs.size(), kParallelBoundsPrims);
   std::vector<RefExtent> run_extent(runs);
-  auto writeRefs = [&](std::size_t r) {
-    for (std::size_t i = refs.size() * r / runs, end = refs.size() * (r + 1) / runs; i < end; ++i) {
+  forEachRun(budget, runs, [&](std::size_t r) {
+    const auto [first, end] = runRange(refs.size(), r, runs);
+    for (std::size_t i = first; i < end; ++i) {
       Aabb b = prims.bounds[i];
       if (linear)
         for (int a = 0; a < 3; ++a) {
@@ -652,13 +648,7 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
                         static_cast<std::int32_t>(i)};
       run_extent[r].add(refs[i]);
     }
-  };
-  {
-    TaskGroup group(budget);
-    for (std::size_t r = 1; r < runs; ++r) group.run([&writeRefs, r] { writeRefs(r); }, true);
-    writeRefs(0);
-    group.wait();
-  }
+  });
   RefExtent all;
   for (const RefExtent& e : run_extent) {
     all.box.extend(e.box);

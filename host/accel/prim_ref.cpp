@@ -267,27 +267,21 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads
   // writes cost page faults, which the threads then share); moving objects are
   // bounded below, in order.
   ThreadBudget budget(threads);
-  const std::size_t runs = count >= kParallelBoundsPrims ? static_cast<std::size_t>(budget.total()) : 1;
+  const std::size_t runs = runsFor(budget, count, kParallelBoundsPrims);
   std::vector<std::vector<Aabb>> run_boxes(runs);
   std::vector<std::vector<unsigned char>> run_finite(runs);
-  {
-    auto boundRun = [&](std::size_t r) {
-      const std::size_t first = count * r / runs, end = count * (r + 1) / runs;
-      run_boxes[r].resize(end - first);
-      run_finite[r].resize(end - first);
-      for (std::size_t i = first; i < end; ++i)
-        if (objects[i].has_transform != OBJECT_MOVING)
-          run_finite[r][i - first] = objectBounds(objects[i], &run_boxes[r][i - first]);
-    };
-    TaskGroup group(budget);
-    for (std::size_t r = 1; r < runs; ++r) group.run([&boundRun, r] { boundRun(r); }, true);
-    boundRun(0);
-    group.wait();
-  }
+  forEachRun(budget, runs, [&](std::size_t r) {
+    const auto [first, end] = runRange(count, r, runs);
+    run_boxes[r].resize(end - first);
+    run_finite[r].resize(end - first);
+    for (std::size_t i = first; i < end; ++i)
+      if (objects[i].has_transform != OBJECT_MOVING)
+        run_finite[r][i - first] = objectBounds(objects[i], &run_boxes[r][i - first]);
+  });
   set.bounded.reserve(count);
   set.bounds.reserve(count);
   for (std::size_t i = 0, r = 0, first = 0; i < count; ++i) {
-    while (i >= count * (r + 1) / runs) first = count * ++r / runs;
+    while (i >= runRange(count, r, runs).second) first = runRange(count, ++r, runs).first;
     const ObjectGpu& ob = objects[i];
     const bool moves = ob.has_transform == OBJECT_MOVING;
     Aabb b = run_boxes[r][i - first], open, close;

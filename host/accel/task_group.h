@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -75,5 +76,28 @@ class TaskGroup {
   std::mutex m_mutex;
   std::exception_ptr m_error;
 };
+
+// How many runs a pass over `count` items is cut into: one per thread of the
+// budget from `parallel_from` items on, else one.
+inline std::size_t runsFor(const ThreadBudget& budget, std::size_t count, std::size_t parallel_from) {
+  return count >= parallel_from ? static_cast<std::size_t>(budget.total()) : 1;
+}
+
+// The items [first, end) of run r of `runs` over `count`: contiguous, in order.
+inline std::pair<std::size_t, std::size_t> runRange(std::size_t count, std::size_t r, std::size_t runs) {
+  return {count * r / runs, count * (r + 1) / runs};
+}
+
+// Calls run(r) for every r below `runs`: runs 1 on on threads of their own,
+// run 0 on this one; returns when all are done (rethrowing the first
+// exception). Whatever the threads, each r is one call, so a pass whose runs
+// write their own parts gives the same result on any number of threads.
+template <typename Run>
+void forEachRun(ThreadBudget& budget, std::size_t runs, Run&& run) {
+  TaskGroup group(budget);
+  for (std::size_t r = 1; r < runs; ++r) group.run([&run, r] { run(r); }, true);
+  run(std::size_t{0});
+  group.wait();
+}
 
 }  // namespace prism
