@@ -40,9 +40,9 @@ class Buffer {
   void read(void* data, size_t bytes, size_t offset = 0) const;
   // Grows (never shrinks) to at least `bytes`; contents are not kept.
   void reserve(Context& context, size_t bytes);
-  // Enqueues filling the first `bytes` (a multiple of the pattern's size) with a
-  // repeated pattern of 1, 2, 4, ... 128 bytes.
-  void fill(const void* pattern, size_t pattern_bytes, size_t bytes);
+  // Enqueues filling `bytes` from `offset` (both multiples of the pattern's size)
+  // with a repeated pattern of 1, 2, 4, ... 128 bytes.
+  void fill(const void* pattern, size_t pattern_bytes, size_t bytes, size_t offset = 0);
   // Enqueues copying `bytes` from this buffer at `offset` into `to` at `to_offset`.
   void copyTo(Buffer& to, size_t bytes, size_t offset = 0, size_t to_offset = 0) const;
 
@@ -102,8 +102,11 @@ bool driverCachesBuilds(const DeviceDescription& device);
 class Context {
  public:
   // use_disk_cache false (--no-cache): prism's disk cache is neither read nor written.
+  // compute_units: 0 for all of the device's; fewer makes the context on a
+  // sub-device of that many (device fission), where the driver can partition
+  // the device (else it keeps them all); device().compute_units says which.
   Context(const DeviceDescription& device, bool use_disk_cache,
-          BinaryCache binaries = BinaryCache::UnlessDriverCaches);
+          BinaryCache binaries = BinaryCache::UnlessDriverCaches, unsigned compute_units = 0);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -149,6 +152,7 @@ class Context {
   cl_program buildProgram(const std::string& source, const std::string& options, const std::string& name);
 
   DeviceDescription m_device;
+  cl_device_id m_sub_device = nullptr;  // owned, when compute_units made one
   cl_context m_context = nullptr;
   cl_command_queue m_queue = nullptr;
   bool m_use_disk_cache;

@@ -76,11 +76,11 @@ class DeviceTracer {
   void unload();
 
   // The kernel-generated sampling modes (not adaptive): a film for all `total`
-  // samples of the frame, zeroed, with their positions.
+  // samples of the frame, with their positions (not zeroed: see traceSamples).
   void beginSampleFilm(std::uint64_t total);
   // Traces samples [first, end) of the sequence (with the Z-buffer, at most one
-  // of its batches), their light added into the film; done(key) after each
-  // chunk, with the key that chunk ends at.
+  // of its batches): their film entries zeroed, then their light added in;
+  // done(key) after each chunk, with the key that chunk ends at.
   void traceSamples(std::uint64_t first, std::uint64_t end, const std::function<void(std::uint64_t)>& done);
   // The film filtered into pixels (rgba).
   std::vector<float> resolvePixels();
@@ -132,7 +132,7 @@ class DeviceTracer {
   // Throws FilmTooLarge unless `samples` per-sample film entries (and their
   // positions when `with_positions`) fit the device beside everything else.
   void checkFilmFits(std::uint64_t samples, bool with_positions) const;
-  void zeroFill(Buffer& buffer, size_t bytes);
+  void zeroFill(Buffer& buffer, size_t bytes, size_t offset = 0);
 
   Context& m_context;
   cl_kernel m_generate = nullptr, m_extend = nullptr, m_shade = nullptr, m_spawn_shadows = nullptr,

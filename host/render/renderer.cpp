@@ -256,7 +256,7 @@ std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_sample
   std::function<bool(size_t, size_t)> step;
   if (unitsOfSlices() && progress)
     step = [&](size_t done, size_t units) { return progress(static_cast<double>(done) / static_cast<double>(units)); };
-  DealResult dealt = dealUnits(result.stats.devices, mine, traced, step);
+  DealResult dealt = dealUnits(result.stats.devices, mine, traced, step, m_paces);
   for (std::string& w : dealt.warnings) result.stats.warnings.push_back(std::move(w));
   if (dealt.cancelled) throw RenderCancelled();
   if (m_parts.shared()) {

@@ -117,6 +117,7 @@ class Renderer {
   std::vector<Context*> m_contexts;
   std::vector<std::unique_ptr<DeviceTracer>> m_tracers;
   std::vector<RenderStats> m_device_stats;  // where each tracer counts its current unit
+  std::vector<double> m_paces;  // each device's samples per second in the last frame (dealUnits)
   AccelBuildOptions m_accel_build;
   std::vector<std::pair<size_t, std::uint64_t>> m_faults;  // (device, unit)
   FrameParts m_parts;

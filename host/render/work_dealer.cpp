@@ -4,6 +4,7 @@
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -17,14 +18,50 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// This frame's pace where the device has finished a unit of it, else the
+// earlier frames'.
+double paceOf(const DeviceShare& share, double earlier) {
+  return share.samples > 0 && share.busy_seconds > 0 ? static_cast<double>(share.samples) / share.busy_seconds
+                                                     : earlier;
+}
+
 }  // namespace
 
+bool worthTaking(std::size_t d, double samples, double pending, const std::vector<DevicePace>& paces) {
+  const double own = paces.at(d).samples_per_second;
+  if (own <= 0) return true;
+  double pooled = 0, held = 0, soonest = std::numeric_limits<double>::infinity();
+  bool other_busy = false;
+  for (std::size_t e = 0; e < paces.size(); ++e) {
+    const DevicePace& p = paces[e];
+    if (e == d || !p.live) continue;
+    if (p.samples_per_second <= 0) return true;
+    other_busy = other_busy || p.busy;
+    const double left = p.busy ? p.samples_left : 0;
+    pooled += p.samples_per_second;
+    held += left;
+    soonest = std::min(soonest, (left + samples) / p.samples_per_second);
+  }
+  if (!other_busy) return true;
+  return samples / own < std::max((pending + held) / pooled, soonest);
+}
+
 DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
-                     const UnitFn& unit, const std::function<bool(std::size_t done, std::size_t units)>& progress) {
+                     const UnitFn& unit, const std::function<bool(std::size_t done, std::size_t units)>& progress,
+                     std::vector<double>& paces) {
   const std::size_t units = unit_samples.size();
   DealResult result;
   result.owner.assign(units, 0);
   if (devices.empty()) throw std::logic_error("dealUnits: no device");
+  paces.resize(devices.size(), 0.0);
+  struct KeepPaces {  // on every way out, cancelled or failed too
+    std::vector<DeviceShare>& devices;
+    std::vector<double>& paces;
+    ~KeepPaces() {
+      for (std::size_t d = 0; d < devices.size(); ++d)
+        if (!devices[d].failed) paces[d] = paceOf(devices[d], paces[d]);
+    }
+  } keep{devices, paces};
 
   if (devices.size() == 1) {
     DeviceShare& share = devices.front();
@@ -48,11 +85,33 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
   std::mutex mutex;
   std::condition_variable changed;
   std::deque<std::size_t> pending;
-  for (std::size_t u = 0; u < units; ++u) pending.push_back(u);
+  double pending_samples = 0;
+  for (std::size_t u = 0; u < units; ++u) {
+    pending.push_back(u);
+    pending_samples += static_cast<double>(unit_samples[u]);
+  }
   std::size_t finished = 0, working = devices.size(), busy = 0;
   bool stop = false;
   std::exception_ptr fatal, last_failure;
   std::vector<std::vector<std::size_t>> done_by(devices.size());
+  // What each device holds now, for worthTaking.
+  std::vector<std::chrono::steady_clock::time_point> since(devices.size());
+  std::vector<double> holding(devices.size(), 0.0);
+  std::vector<DevicePace> pace(devices.size());
+  auto worth = [&](std::size_t d) {  // under the lock
+    const auto now = std::chrono::steady_clock::now();
+    for (std::size_t e = 0; e < devices.size(); ++e) {
+      DevicePace& p = pace[e];
+      p.live = !devices[e].failed;
+      p.samples_per_second = paceOf(devices[e], paces[e]);
+      p.busy = holding[e] > 0;
+      p.samples_left = p.busy && p.samples_per_second > 0
+                           ? std::max(0.0, holding[e] - p.samples_per_second *
+                                                            std::chrono::duration<double>(now - since[e]).count())
+                           : 0.0;
+    }
+    return worthTaking(d, static_cast<double>(unit_samples[pending.front()]), pending_samples, pace);
+  };
 
   auto worker = [&](std::size_t d) {
     DeviceShare& share = devices[d];
@@ -61,11 +120,15 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
       {
         std::unique_lock<std::mutex> lock(mutex);
         // With nothing left to take, stay while another device is busy: its
-        // unit comes back if that device fails.
-        changed.wait(lock, [&] { return stop || !pending.empty() || busy == 0; });
+        // unit comes back if that device fails. A unit not worth taking now
+        // may be after the others' next step, or their failure.
+        changed.wait(lock, [&] { return stop || (pending.empty() ? busy == 0 : worth(d)); });
         if (stop || pending.empty()) break;
         u = pending.front();
         pending.pop_front();
+        pending_samples -= static_cast<double>(unit_samples[u]);
+        holding[d] = static_cast<double>(unit_samples[u]);
+        since[d] = std::chrono::steady_clock::now();
         ++busy;
       }
       const auto start = std::chrono::steady_clock::now();
@@ -74,13 +137,18 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
       } catch (const DeviceError& e) {
         std::lock_guard<std::mutex> lock(mutex);
         --busy;
+        holding[d] = 0;
         changed.notify_all();
         share.failed = true;
         share.failure = e.what();
         // Its unit and every unit it finished go to the others: a failed
         // device's memory is not read again.
         pending.push_front(u);
-        for (std::size_t v : done_by[d]) pending.push_front(v);
+        pending_samples += static_cast<double>(unit_samples[u]);
+        for (std::size_t v : done_by[d]) {
+          pending.push_front(v);
+          pending_samples += static_cast<double>(unit_samples[v]);
+        }
         finished -= done_by[d].size();
         done_by[d].clear();
         share.units = 0;
@@ -92,6 +160,7 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex);
         --busy;
+        holding[d] = 0;
         changed.notify_all();
         if (!fatal) fatal = std::current_exception();
         stop = true;
@@ -105,6 +174,7 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
       done_by[d].push_back(u);
       ++finished;
       --busy;
+      holding[d] = 0;
       changed.notify_all();
     }
     std::lock_guard<std::mutex> lock(mutex);

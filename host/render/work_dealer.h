@@ -1,5 +1,6 @@
 // Deals the units of a frame (ranges of its sample sequence) out to several
-// devices as each becomes free, so a faster device takes more of them; a device
+// devices as each becomes free, so a faster device takes more of them, and a
+// much slower one leaves the last units to the others (worthTaking); a device
 // that fails (DeviceError) is retired with a warning and its unit goes back to
 // the others. Which device traced a unit never changes its result: a unit's
 // samples depend on their keys alone (render/device_tracer.h).
@@ -29,6 +30,25 @@ struct DealResult {
   bool cancelled = false;
 };
 
+// A device's pace, as dealUnits judges whether a free device should take a unit.
+struct DevicePace {
+  bool live = true;                // not failed
+  double samples_per_second = 0;   // 0: not known yet
+  bool busy = false;               // tracing a unit now
+  double samples_left = 0;         // of that unit, by its pace (0 when not known)
+};
+
+// Whether device d, free now, should take a unit of `samples` samples while
+// `pending` samples (this unit's among them) wait. It should not when the others
+// would trace them all (after what they hold now) before d finished this one:
+// a device many times slower than the rest, taking the last units, would make
+// the frame wait for it. It takes the unit when its pace or a busy other's is
+// not known yet, and when no other live device is busy (an idle one may be
+// judging the same way, and someone must take it). The others' time is the
+// larger of their pooled pace over all the work and the soonest any one of them
+// could finish this unit, since a unit is not split.
+bool worthTaking(std::size_t d, double samples, double pending, const std::vector<DevicePace>& paces);
+
 // unit(device, u) traces unit u on device `device`; it may throw. A DeviceError
 // retires the device (its unit, and the units it had finished, are dealt
 // again: nothing is read back from a device that failed); any other exception (a
@@ -39,7 +59,12 @@ struct DealResult {
 // thread and a failure is rethrown as it came. Throws the last failure when
 // every device has failed.
 using UnitFn = std::function<void(std::size_t device, std::size_t unit)>;
+// paces: each device's samples per second in earlier frames (0: not known),
+// used until the device has finished a unit of this one; on return, this
+// frame's where it finished one. A device judges by worthTaking whether to take
+// each unit after its first.
 DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
-                     const UnitFn& unit, const std::function<bool(std::size_t done, std::size_t units)>& progress);
+                     const UnitFn& unit, const std::function<bool(std::size_t done, std::size_t units)>& progress,
+                     std::vector<double>& paces);
 
 }  // namespace prism
