@@ -112,7 +112,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   RenderStats& stats = result.stats;
   const size_t pixels = static_cast<size_t>(options.width) * options.height;
   stats.rays_per_pixel = static_cast<double>(stats.rays_by_kind[RAY_KIND_PRIMARY]) / static_cast<double>(pixels);
-  gatherAovs(result);
+  if (sampling.mode != AaMode::Adaptive) gatherAovs(result);  // adaptive: after its first pass
   if (m_parts.part != 0) result.rgba.assign(4 * pixels, 0.f);  // the image is part 0's
   for (auto& t : m_tracers) t->unload();
   if (m_parts.shared()) {
@@ -407,6 +407,9 @@ void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptio
         in.expectDone();
       }
     }
+    // Only the first pass writes AOVs (its corners). Gathered now, they survive a
+    // device that fails in a later pass, whose memory is not read again.
+    if (pass == 0) gatherAovs(result);
     ++pass;
     traced += n;
     return rgba;
