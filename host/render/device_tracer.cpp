@@ -229,7 +229,13 @@ void DeviceTracer::traceSamples(std::uint64_t first_sample, std::uint64_t end,
 
 std::vector<float> DeviceTracer::resolvePixels() {
   const RenderOptions& opt = *m_options;
+  return resolvePixels(0, static_cast<size_t>(opt.width) * opt.height);
+}
+
+std::vector<float> DeviceTracer::resolvePixels(size_t first_pixel, size_t count) {
+  const RenderOptions& opt = *m_options;
   const size_t pixels = static_cast<size_t>(opt.width) * opt.height;
+  if (count == 0) return {};
   m_pixels.reserve(m_context, pixels * 4 * sizeof(float));
   m_context.launch(m_resolve)
       .arg(static_cast<cl_int>(m_sampling.mode))
@@ -239,11 +245,13 @@ std::vector<float> DeviceTracer::resolvePixels() {
       .arg(static_cast<cl_int>(m_sampling.spp))
       .arg(m_sample_xy)
       .arg(m_film)
-      .arg(static_cast<cl_int>(0))
-      .arg(static_cast<cl_int>(pixels))
+      .arg(static_cast<cl_int>(first_pixel))
+      .arg(static_cast<cl_int>(count))
       .arg(m_pixels)
-      .run(pixels);
-  return m_pixels.readVector<float>(pixels * 4);
+      .run(count);
+  std::vector<float> rgba(4 * count);
+  m_pixels.read(rgba.data(), rgba.size() * sizeof(float), 4 * first_pixel * sizeof(float));
+  return rgba;
 }
 
 void DeviceTracer::readSamples(std::uint64_t first, size_t n, float* rgba, float* xy) const {

@@ -82,8 +82,10 @@ class DeviceTracer {
   // of its batches): their film entries zeroed, then their light added in;
   // done(key) after each chunk, with the key that chunk ends at.
   void traceSamples(std::uint64_t first, std::uint64_t end, const std::function<void(std::uint64_t)>& done);
-  // The film filtered into pixels (rgba).
+  // The film filtered into pixels (rgba): all of them, or pixels
+  // [first_pixel, first_pixel + count) in row-major order.
   std::vector<float> resolvePixels();
+  std::vector<float> resolvePixels(size_t first_pixel, size_t count);
   // The film entries (rgba) and positions (x, y) of samples [first, first + n),
   // read from this device or written into its film (to gather a frame that
   // several devices traced on the one that resolves it).

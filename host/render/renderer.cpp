@@ -8,6 +8,7 @@
 #include "kernels/shared/ray_gpu.h"
 #include "device/cl_error.h"
 #include "render/light_buffer.h"
+#include "render/part_resolve.h"
 #include "render/work_dealer.h"
 
 namespace prism {
@@ -306,44 +307,84 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
         });
       },
       result, progress);
-  // The units other devices traced go to the one that resolves the frame; at
-  // the other parts, to part 0.
-  const bool resolves = m_parts.part == 0;
+  // The units this process's other devices traced go to the one that resolves
+  // (the survivor). Part 0 resolves the frame; each other part sends it the
+  // pixels it can resolve alone and the samples part 0 needs for the rest
+  // (render/part_resolve.h), or, in quincunx mode, whose corner samples are
+  // shared by neighbouring pixels, all its samples.
   const size_t resolver = survivor(result.stats);
+  DeviceTracer& resolving = *m_tracers[resolver];
   std::vector<float> rgba, xy;
-  ByteWriter out;
   for (size_t u = 0; u < owner.size(); ++u) {
-    if (owner[u] == kElsewhere || (resolves && owner[u] == resolver)) continue;
-    const std::uint64_t first = u * unit_size;
+    if (owner[u] == kElsewhere || owner[u] == resolver) continue;
     const size_t n = static_cast<size_t>(unit_samples[u]);
     rgba.resize(4 * n);
     xy.resize(2 * n);
-    m_tracers[owner[u]]->readSamples(first, n, rgba.data(), xy.data());
-    if (resolves) {
-      m_tracers[resolver]->writeSamples(first, n, rgba.data(), xy.data());
-    } else {
+    m_tracers[owner[u]]->readSamples(u * unit_size, n, rgba.data(), xy.data());
+    resolving.writeSamples(u * unit_size, n, rgba.data(), xy.data());
+  }
+  if (!m_parts.shared()) {
+    result.rgba = resolving.resolvePixels();
+    return;
+  }
+  const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * static_cast<std::uint64_t>(opt.height);
+  // As the resolve kernel reaches: ceil(r - 1/2) rows and columns, in float.
+  const auto reach_rows =
+      static_cast<std::uint64_t>(std::ceil(static_cast<float>(filterRadius(sampling.effectiveFilter())) - 0.5f));
+  const auto partOf = [&](std::uint32_t p) {
+    const auto [first_unit, last_unit] = partUnits(unit_samples.size(), p, m_parts.parts);
+    const std::uint64_t first = std::min<std::uint64_t>(total, first_unit * unit_size);
+    const std::uint64_t end = std::min<std::uint64_t>(total, last_unit * unit_size);
+    if (sampling.mode == AaMode::Quincunx) {
+      PartResolve all;
+      if (end > first) all.samples.emplace_back(first, end);
+      return all;
+    }
+    return partResolve(first, end, static_cast<std::uint64_t>(sampling.spp),
+                       reach_rows * (static_cast<std::uint64_t>(opt.width) + 1));
+  };
+  ByteWriter out;
+  if (m_parts.part != 0) {
+    const PartResolve mine = partOf(m_parts.part);
+    const std::vector<float> own =
+        resolving.resolvePixels(static_cast<size_t>(mine.first_pixel), static_cast<size_t>(mine.end_pixel - mine.first_pixel));
+    out.putArray(own.data(), own.size());
+    for (const auto& [first, end] : mine.samples) {
+      const size_t n = static_cast<size_t>(end - first);
+      rgba.resize(4 * n);
+      xy.resize(2 * n);
+      resolving.readSamples(first, n, rgba.data(), xy.data());
       out.putArray(rgba.data(), 4 * n);
       out.putArray(xy.data(), 2 * n);
     }
   }
-  if (m_parts.shared()) {
-    const std::vector<Bytes> got = m_parts.exchange(false, out.take());
-    if (!resolves) return;  // render() gives the other parts zeros
-    for (std::uint32_t p = 1; p < m_parts.parts; ++p) {
-      const auto [first_unit, last_unit] = partUnits(unit_samples.size(), p, m_parts.parts);
-      ByteReader in(got.at(p));
-      for (size_t u = first_unit; u < last_unit; ++u) {
-        const size_t n = static_cast<size_t>(unit_samples[u]);
-        rgba.resize(4 * n);
-        xy.resize(2 * n);
-        in.getArray(rgba.data(), 4 * n);
-        in.getArray(xy.data(), 2 * n);
-        m_tracers[resolver]->writeSamples(u * unit_size, n, rgba.data(), xy.data());
-      }
-      in.expectDone();
+  const std::vector<Bytes> got = m_parts.exchange(false, out.take());
+  if (m_parts.part != 0) return;  // render() gives the other parts zeros
+  result.rgba.assign(4 * pixels, 0.f);
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> resolved;  // by the other parts, in order
+  for (std::uint32_t p = 1; p < m_parts.parts; ++p) {
+    const PartResolve theirs = partOf(p);
+    ByteReader in(got.at(p));
+    in.getArray(result.rgba.data() + 4 * theirs.first_pixel, 4 * (theirs.end_pixel - theirs.first_pixel));
+    if (theirs.end_pixel > theirs.first_pixel) resolved.emplace_back(theirs.first_pixel, theirs.end_pixel);
+    for (const auto& [first, end] : theirs.samples) {
+      const size_t n = static_cast<size_t>(end - first);
+      rgba.resize(4 * n);
+      xy.resize(2 * n);
+      in.getArray(rgba.data(), 4 * n);
+      in.getArray(xy.data(), 2 * n);
+      resolving.writeSamples(first, n, rgba.data(), xy.data());
     }
+    in.expectDone();
   }
-  result.rgba = m_tracers[resolver]->resolvePixels();
+  // Part 0 resolves the pixels between those.
+  std::uint64_t from = 0;
+  resolved.emplace_back(pixels, pixels);
+  for (const auto& [first, end] : resolved) {
+    const std::vector<float> own = resolving.resolvePixels(static_cast<size_t>(from), static_cast<size_t>(first - from));
+    std::copy(own.begin(), own.end(), result.rgba.begin() + static_cast<std::ptrdiff_t>(4 * from));
+    from = end;
+  }
 }
 
 void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptions& opt, RenderResult& result,

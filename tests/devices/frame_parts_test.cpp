@@ -10,6 +10,7 @@
 #include <condition_variable>
 #include <cstring>
 #include <functional>
+#include <random>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,7 @@
 
 #include "device_fixtures.h"
 #include "render/frame_parts.h"
+#include "render/part_resolve.h"
 
 using namespace prism;
 using namespace prism_test;
@@ -169,6 +171,84 @@ TEST_CASE("a frame split over processes is the same as one process's, bit for bi
       }
     }
   }
+}
+
+TEST_CASE("partResolve: a part resolves only pixels whose filter reads its own samples, and part 0 gets the rest") {
+  // Against the filter's 2D neighbourhood (rows and columns within reach), for
+  // stretches cut at random keys.
+  std::mt19937 rng(7);
+  for (std::uint64_t w : {1, 2, 5, 13})
+    for (std::uint64_t h : {1, 3, 8})
+      for (std::uint64_t spp : {1, 2, 3, 4})
+        for (std::uint64_t reach : {0, 1, 2})
+          for (int trial = 0; trial < 6; ++trial) {
+            const std::uint64_t keys = w * h * spp;
+            const std::uint32_t parts = 1 + rng() % 5;
+            std::vector<std::uint64_t> cut = {0, keys};
+            for (std::uint32_t p = 1; p < parts; ++p) cut.push_back(rng() % (keys + 1));
+            std::sort(cut.begin(), cut.end());
+            const auto neighbours = [&](std::uint64_t pixel, auto&& each) {
+              const auto i = static_cast<std::int64_t>(pixel % w), j = static_cast<std::int64_t>(pixel / w);
+              const auto r = static_cast<std::int64_t>(reach);
+              for (std::int64_t y = std::max<std::int64_t>(0, j - r); y <= std::min<std::int64_t>(h - 1, j + r); ++y)
+                for (std::int64_t x = std::max<std::int64_t>(0, i - r); x <= std::min<std::int64_t>(w - 1, i + r); ++x)
+                  each(static_cast<std::uint64_t>(y) * w + static_cast<std::uint64_t>(x));
+            };
+            std::vector<bool> at_part0(keys, false), resolved(w * h, false);
+            for (std::uint64_t k = cut[0]; k < cut[1]; ++k) at_part0[k] = true;
+            for (std::uint32_t p = 1; p < parts; ++p) {
+              const PartResolve r = partResolve(cut[p], cut[p + 1], spp, reach * (w + 1));
+              INFO("w " << w << " h " << h << " spp " << spp << " reach " << reach << " part [" << cut[p] << ", "
+                        << cut[p + 1] << ")");
+              for (std::uint64_t px = r.first_pixel; px < r.end_pixel; ++px) {
+                resolved[px] = true;
+                neighbours(px, [&](std::uint64_t q) {
+                  CHECK(q * spp >= cut[p]);
+                  CHECK((q + 1) * spp <= cut[p + 1]);
+                });
+              }
+              std::uint64_t last = cut[p];
+              for (const auto& [first, end] : r.samples) {
+                CHECK(first >= last);  // in order, apart
+                CHECK(end > first);
+                CHECK(end <= cut[p + 1]);
+                last = end;
+                for (std::uint64_t k = first; k < end; ++k) at_part0[k] = true;
+              }
+            }
+            // Part 0 resolves every other pixel: it has every sample its filter reads.
+            for (std::uint64_t px = 0; px < w * h; ++px) {
+              if (resolved[px]) continue;
+              neighbours(px, [&](std::uint64_t q) {
+                for (std::uint64_t k = q * spp; k < (q + 1) * spp; ++k) CHECK(at_part0[k]);
+              });
+            }
+          }
+}
+
+TEST_CASE("parts resolve their own pixels: the same bits as one process with every filter and quincunx") {
+  const std::vector<Context*> all = poclDevices();
+  REQUIRE(all.size() >= 3);
+  Renderer one(*all[0]);
+  const Scene scene = loadSceneFile(PRISM_SOURCE_DIR "/scenes/whitted.json");
+  RenderOptions o = RenderOptions::fromScene(scene);
+  o.width = 160;
+  o.height = 120;
+  o.aa = AaMode::Jitter;
+  o.spp = 16;  // 307,200 samples: 5 units, so each part has whole pixels far inside its stretch
+  for (FilterKind f : {FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian, FilterKind::Mitchell}) {
+    o.filter = f;
+    const RenderResult reference = one.render(scene, o);
+    for (const auto& layout : {std::vector<std::vector<Context*>>{{all[0]}, {all[1]}},
+                               std::vector<std::vector<Context*>>{{all[2]}, {all[0]}, {all[1]}}})
+      requireSameFrame(reference, renderInParts(layout, scene, o)[0]);
+  }
+  o.aa = AaMode::Quincunx;  // corners shared by pixels: parts send samples
+  o.spp = 1;
+  o.width = 320;
+  o.height = 240;
+  const RenderResult reference = one.render(scene, o);
+  requireSameFrame(reference, renderInParts({{all[0]}, {all[1]}}, scene, o)[0]);
 }
 
 TEST_CASE("check-nan across parts finds the first non-finite contribution in render order, as one process does") {
