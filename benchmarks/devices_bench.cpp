@@ -10,7 +10,6 @@
 #include "bench_process.h"
 #include "device/context.h"
 #include "device/device_list.h"
-#include "device/frame_contexts.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 
@@ -58,15 +57,13 @@ int devicesMain(const std::vector<std::string>& args) {
   if (status >= 0) return status;
   try {
     const std::vector<DeviceDescription> devices = selectDevices(selector);
-    // Each device alone on all its compute units; together on the contexts a
-    // shared frame gets (a CPU beside a GPU leaves it a core, frame_contexts.h).
-    std::vector<std::unique_ptr<Context>> alone, together_contexts = openFrameContexts(devices, true);
+    std::vector<std::unique_ptr<Context>> contexts;
     std::vector<Context*> all;
     std::vector<std::unique_ptr<Renderer>> solo;
-    for (size_t i = 0; i < devices.size(); ++i) {
-      alone.push_back(std::make_unique<Context>(devices[i], true));
-      all.push_back(together_contexts[i].get());
-      solo.push_back(std::make_unique<Renderer>(*alone.back()));
+    for (const DeviceDescription& d : devices) {
+      contexts.push_back(std::make_unique<Context>(d, true));
+      all.push_back(contexts.back().get());
+      solo.push_back(std::make_unique<Renderer>(*contexts.back()));
     }
     Renderer shared(all);
     const Scene scene = loadSceneFile(scene_path);
@@ -95,8 +92,8 @@ int devicesMain(const std::vector<std::string>& args) {
     std::printf("scene: %s, %dx%d at %d spp (jitter), %llu rays; median of %d renders, taking turns\n\n",
                 scene_path.c_str(), width, height, spp, static_cast<unsigned long long>(reference.stats.totalRays()),
                 repeats);
-    std::printf("%-4s %-40s %-6s %11s %12s %12s %10s %9s\n", "", "device", "type", "solo Mr/s", "shared units",
-                "shared share", "busy ms", "units/cu");
+    std::printf("%-4s %-40s %-6s %11s %12s %12s %10s\n", "", "device", "type", "solo Mr/s", "shared units",
+                "shared share", "busy ms");
     double sum = 0, best = 0;
     std::uint64_t samples = 0;
     for (const DeviceShare& s : last.stats.devices) samples += s.samples;
@@ -105,12 +102,11 @@ int devicesMain(const std::vector<std::string>& args) {
       sum += m;
       best = std::max(best, m);
       const DeviceShare& s = last.stats.devices[i];
-      std::printf("[%u]  %-40.40s %-6s %11.2f %12llu %11.1f%% %10.1f %4u/%-4u%s\n", devices[i].index,
+      std::printf("[%u]  %-40.40s %-6s %11.2f %12llu %11.1f%% %10.1f%s\n", devices[i].index,
                   devices[i].name.c_str(),
                   devices[i].type & CL_DEVICE_TYPE_GPU ? "GPU" : devices[i].type & CL_DEVICE_TYPE_CPU ? "CPU" : "other", m,
                   static_cast<unsigned long long>(s.units), samples ? 100.0 * s.samples / samples : 0.0,
-                  1e3 * s.busy_seconds, together_contexts[i]->device().compute_units, devices[i].compute_units,
-                  s.failed ? "  (failed)" : "");
+                  1e3 * s.busy_seconds, s.failed ? "  (failed)" : "");
     }
     const double together = median(shared_mrays);
     // Bits are promised among devices of one kind; a GPU and a CPU round some

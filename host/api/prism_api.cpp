@@ -10,7 +10,6 @@
 #include "api/api_handles.h"
 #include "api/api_render.h"
 #include "device/device_list.h"
-#include "device/frame_contexts.h"
 #include "render/image_writer.h"
 #include "scene/animation.h"
 #include "scene/scene_loader.h"
@@ -236,9 +235,8 @@ PRISM_API PrismStatus prismCreateContext(const char* selector, const PrismContex
     bool use_cache = options ? options->use_kernel_cache != 0 : true;
     auto impl = std::make_unique<PrismContextImpl>();
     std::vector<DeviceDescription> devices = selectDevices(selector ? selector : "");
-    std::vector<std::unique_ptr<Context>> contexts = openFrameContexts(devices, use_cache);
-    impl->context = std::move(contexts.front());
-    for (size_t i = 1; i < contexts.size(); ++i) impl->more.push_back(std::move(contexts[i]));
+    impl->context = std::make_unique<Context>(devices.front(), use_cache);
+    for (size_t i = 1; i < devices.size(); ++i) impl->more.push_back(std::make_unique<Context>(devices[i], use_cache));
     *out_context = impl.release();
     return PRISM_OK;
   });

@@ -38,36 +38,6 @@ std::vector<unsigned char> programBinary(cl_program program) {
   return binary;
 }
 
-// A sub-device of `units` compute units (OpenCL 1.2 device fission), or null
-// where the driver cannot partition the device so.
-cl_device_id subDevice(cl_device_id device, unsigned units) {
-  size_t size = 0;
-  if (clGetDeviceInfo(device, CL_DEVICE_PARTITION_PROPERTIES, 0, nullptr, &size) != CL_SUCCESS || size == 0)
-    return nullptr;
-  std::vector<cl_device_partition_property> ways(size / sizeof(cl_device_partition_property));
-  if (clGetDeviceInfo(device, CL_DEVICE_PARTITION_PROPERTIES, size, ways.data(), nullptr) != CL_SUCCESS) return nullptr;
-  auto offers = [&](cl_device_partition_property way) { return std::find(ways.begin(), ways.end(), way) != ways.end(); };
-  const auto count = static_cast<cl_device_partition_property>(units);
-  cl_device_id sub = nullptr;
-  if (offers(CL_DEVICE_PARTITION_BY_COUNTS)) {
-    const cl_device_partition_property by_counts[] = {CL_DEVICE_PARTITION_BY_COUNTS, count,
-                                                      CL_DEVICE_PARTITION_BY_COUNTS_LIST_END, 0};
-    cl_uint made = 0;
-    if (clCreateSubDevices(device, by_counts, 1, &sub, &made) == CL_SUCCESS && made == 1) return sub;
-  }
-  if (offers(CL_DEVICE_PARTITION_EQUALLY)) {
-    // As many sub-devices of `units` as fit; the first is kept.
-    const cl_device_partition_property equally[] = {CL_DEVICE_PARTITION_EQUALLY, count, 0};
-    cl_uint made = 0;
-    if (clCreateSubDevices(device, equally, 0, nullptr, &made) != CL_SUCCESS || made == 0) return nullptr;
-    std::vector<cl_device_id> subs(made);
-    if (clCreateSubDevices(device, equally, made, subs.data(), nullptr) != CL_SUCCESS) return nullptr;
-    for (cl_uint i = 1; i < made; ++i) clReleaseDevice(subs[i]);
-    return subs[0];
-  }
-  return nullptr;
-}
-
 }  // namespace
 
 // ---- Buffer ------------------------------------------------------------------
@@ -158,28 +128,17 @@ bool driverCachesBuilds(const DeviceDescription& device) {
   return !(cache && std::string(cache) == "0");
 }
 
-Context::Context(const DeviceDescription& device, bool use_disk_cache, BinaryCache binaries, unsigned compute_units)
+Context::Context(const DeviceDescription& device, bool use_disk_cache, BinaryCache binaries)
     : m_device(device),
       m_use_disk_cache(use_disk_cache && (binaries == BinaryCache::Always || !driverCachesBuilds(device))) {
-  if (compute_units > 0 && compute_units < device.compute_units) {
-    m_sub_device = subDevice(device.device, compute_units);
-    if (m_sub_device) {
-      m_device.device = m_sub_device;
-      m_device.compute_units = compute_units;
-    }
-  }
   cl_int status = CL_SUCCESS;
   cl_context_properties props[] = {CL_CONTEXT_PLATFORM, reinterpret_cast<cl_context_properties>(device.platform), 0};
   m_context = clCreateContext(props, 1, &device.device, nullptr, nullptr, &status);
-  if (status != CL_SUCCESS) {
-    if (m_sub_device) clReleaseDevice(m_sub_device);
-    throwClError(status, "clCreateContext", __FILE__, __LINE__);
-  }
+  if (status != CL_SUCCESS) throwClError(status, "clCreateContext", __FILE__, __LINE__);
   // Profiling costs nothing until a render asks for it (KernelProfile).
   m_queue = clCreateCommandQueue(m_context, device.device, CL_QUEUE_PROFILING_ENABLE, &status);
   if (status != CL_SUCCESS) {
     clReleaseContext(m_context);
-    if (m_sub_device) clReleaseDevice(m_sub_device);
     throwClError(status, "clCreateCommandQueue", __FILE__, __LINE__);
   }
 }
@@ -193,7 +152,6 @@ Context::~Context() {
   }
   if (m_queue) clReleaseCommandQueue(m_queue);
   if (m_context) clReleaseContext(m_context);
-  if (m_sub_device) clReleaseDevice(m_sub_device);
 }
 
 void Context::finish() { PRISM_CL_CHECK(clFinish(m_queue)); }

@@ -102,11 +102,8 @@ bool driverCachesBuilds(const DeviceDescription& device);
 class Context {
  public:
   // use_disk_cache false (--no-cache): prism's disk cache is neither read nor written.
-  // compute_units: 0 for all of the device's; fewer makes the context on a
-  // sub-device of that many (device fission), where the driver can partition
-  // the device (else it keeps them all); device().compute_units says which.
   Context(const DeviceDescription& device, bool use_disk_cache,
-          BinaryCache binaries = BinaryCache::UnlessDriverCaches, unsigned compute_units = 0);
+          BinaryCache binaries = BinaryCache::UnlessDriverCaches);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -152,7 +149,6 @@ class Context {
   cl_program buildProgram(const std::string& source, const std::string& options, const std::string& name);
 
   DeviceDescription m_device;
-  cl_device_id m_sub_device = nullptr;  // owned, when compute_units made one
   cl_context m_context = nullptr;
   cl_command_queue m_queue = nullptr;
   bool m_use_disk_cache;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "kernels/shared/contribution_gpu.h"
@@ -235,6 +236,7 @@ std::vector<float> DeviceTracer::resolvePixels() {
 std::vector<float> DeviceTracer::resolvePixels(size_t first_pixel, size_t count) {
   const RenderOptions& opt = *m_options;
   const size_t pixels = static_cast<size_t>(opt.width) * opt.height;
+  if (first_pixel > pixels || count > pixels - first_pixel) throw std::logic_error("resolvePixels: past the frame");
   if (count == 0) return {};
   m_pixels.reserve(m_context, pixels * 4 * sizeof(float));
   m_context.launch(m_resolve)

@@ -94,17 +94,21 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
   bool stop = false;
   std::exception_ptr fatal, last_failure;
   std::vector<std::vector<std::size_t>> done_by(devices.size());
-  // What each device holds now, for worthTaking.
+  // What each device holds now, for worthTaking. A device counts as busy
+  // unless it is waiting for a unit: between two units it is about to take the
+  // next, and must not look idle to the others.
   std::vector<std::chrono::steady_clock::time_point> since(devices.size());
   std::vector<double> holding(devices.size(), 0.0);
+  std::vector<char> waiting(devices.size(), 0), took(devices.size(), 0);
   std::vector<DevicePace> pace(devices.size());
   auto worth = [&](std::size_t d) {  // under the lock
+    if (!took[d]) return true;  // its first unit of the frame: its pace, measured afresh
     const auto now = std::chrono::steady_clock::now();
     for (std::size_t e = 0; e < devices.size(); ++e) {
       DevicePace& p = pace[e];
       p.live = !devices[e].failed;
       p.samples_per_second = paceOf(devices[e], paces[e]);
-      p.busy = holding[e] > 0;
+      p.busy = holding[e] > 0 || !waiting[e];
       p.samples_left = p.busy && p.samples_per_second > 0
                            ? std::max(0.0, holding[e] - p.samples_per_second *
                                                             std::chrono::duration<double>(now - since[e]).count())
@@ -122,8 +126,12 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
         // With nothing left to take, stay while another device is busy: its
         // unit comes back if that device fails. A unit not worth taking now
         // may be after the others' next step, or their failure.
+        waiting[d] = 1;
+        changed.notify_all();  // the others judge again with this device idle
         changed.wait(lock, [&] { return stop || (pending.empty() ? busy == 0 : worth(d)); });
-        if (stop || pending.empty()) break;
+        if (stop || pending.empty()) break;  // still waiting: idle from now on
+        waiting[d] = 0;
+        took[d] = 1;
         u = pending.front();
         pending.pop_front();
         pending_samples -= static_cast<double>(unit_samples[u]);

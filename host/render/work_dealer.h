@@ -42,7 +42,7 @@ struct DevicePace {
 // `pending` samples (this unit's among them) wait. It should not when the others
 // would trace them all (after what they hold now) before d finished this one:
 // a device many times slower than the rest, taking the last units, would make
-// the frame wait for it. It takes the unit when its pace or a busy other's is
+// the frame wait for it. It takes the unit when its pace or any live other's is
 // not known yet, and when no other live device is busy (an idle one may be
 // judging the same way, and someone must take it). The others' time is the
 // larger of their pooled pace over all the work and the soonest any one of them
@@ -61,8 +61,9 @@ bool worthTaking(std::size_t d, double samples, double pending, const std::vecto
 using UnitFn = std::function<void(std::size_t device, std::size_t unit)>;
 // paces: each device's samples per second in earlier frames (0: not known),
 // used until the device has finished a unit of this one; on return, this
-// frame's where it finished one. A device judges by worthTaking whether to take
-// each unit after its first.
+// frame's where it finished one. Every device takes a first unit, so its pace is
+// measured in every frame; it judges by worthTaking whether to take each unit
+// after that. A device between two units counts as busy to the others.
 DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
                      const UnitFn& unit, const std::function<bool(std::size_t done, std::size_t units)>& progress,
                      std::vector<double>& paces);

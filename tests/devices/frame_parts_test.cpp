@@ -10,8 +10,8 @@
 #include <condition_variable>
 #include <cstring>
 #include <functional>
-#include <random>
 #include <mutex>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <thread>
