@@ -15,7 +15,9 @@ PHASE=${PHASE:-check,bench}
 R=$PWD
 G=$R/build-gpu
 W=/tmp/gpuwork
-mkdir -p $W/logs
+OUT=${OUT:-$W/out}  # set by the device tool
+rm -rf $W
+mkdir -p $W/logs $OUT
 S=$W/logs/summary.txt
 say() { echo "$*" | tee -a $S; }
 step() {  # step NAME SECONDS command...
@@ -43,7 +45,9 @@ OCL=$(ls /usr/local/nvidia/lib64/libnvidia-opencl.so.1 /usr/lib/x86_64-linux-gnu
 say "NVIDIA's OpenCL library: ${OCL:-none}"
 mkdir -p $W/icd
 [ -n "$OCL" ] && echo "$OCL" > $W/icd/nvidia.icd
-cp /etc/OpenCL/vendors/*.icd $W/icd/ 2>/dev/null
+for icd in /etc/OpenCL/vendors/*.icd; do  # the machine's other drivers (PoCL), NVIDIA's once
+  [ -f "$icd" ] && ! grep -qi nvidia "$icd" && cp "$icd" $W/icd/
+done
 export OCL_ICD_VENDORS=$W/icd
 L=$G/devlib
 STD=$(ldconfig -p | awk '/libstdc\+\+\.so\.6 .*x86-64/{print $NF; exit}')

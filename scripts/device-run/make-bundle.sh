@@ -11,6 +11,7 @@ out="$root/build-gpu"
 sys=/lib/x86_64-linux-gnu
 
 git -C "$root" worktree remove --force "$src" 2>/dev/null || rm -rf "$src"
+git -C "$root" worktree prune
 git -C "$root" worktree add --detach "$src" HEAD
 python3 "$root/scripts/device-run/oiio_free.py" "$src"
 grep -qs "CMAKE_HOME_DIRECTORY:INTERNAL=$src\$" "$build/CMakeCache.txt" || rm -rf "$build"
@@ -33,7 +34,7 @@ done
 cp -L "$sys/libstdc++.so.6" "$sys/libgcc_s.so.1" "$out/devlib/std/"  # used only where the machine's are older
 tar -cJhf "$out/devlib/extra-libs.tar.xz" -C "$sys" libembree3.so.3   # 44 MB, 9 MB packed
 bunny="$root/../shared/data/meshes/bunny/bun_zipper.ply"
-[ -f "$bunny" ] && cp "$bunny" "$out/data/bunny/"
+if [ -f "$bunny" ]; then cp "$bunny" "$out/data/bunny/"; else echo "make-bundle.sh: no $bunny: the bench phase will fail" >&2; fi
 cp "$root/scripts/device-run/gpu-run.sh" "$out/"
 echo "$root" > "$out/origin.txt"
 du -sh "$out"

@@ -23,8 +23,10 @@ def cut(path, start, end, new):
     """Replaces the text from `start` up to (not including) `end`."""
     p = src / path
     text = p.read_text()
-    i = text.index(start)
-    j = text.index(end, i)
+    i = text.find(start)
+    j = text.find(end, i) if i >= 0 else -1
+    if j < 0:
+        sys.exit(f"oiio_free.py: {path} has changed; update this script")
     p.write_text(text[:i] + new + text[j:])
 
 
