@@ -12,6 +12,19 @@
 #include "render/work_dealer.h"
 
 namespace prism {
+namespace {
+
+// The film entries (rgba) and positions (x, y) of a run of samples, on the host.
+struct SampleRun {
+  std::vector<float> rgba, xy;
+  void resize(size_t n) {
+    rgba.resize(4 * n);
+    xy.resize(2 * n);
+  }
+  size_t size() const { return xy.size() / 2; }
+};
+
+}  // namespace
 
 Renderer::Renderer(Context& context) : Renderer(std::vector<Context*>{&context}) {}
 
@@ -308,25 +321,29 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
       },
       result, progress);
   // The units this process's other devices traced go to the one that resolves
-  // (the survivor). Part 0 resolves the frame; each other part sends it the
-  // pixels it can resolve alone and the samples part 0 needs for the rest
+  // (the survivor).
+  DeviceTracer& resolving = *m_tracers[survivor(result.stats)];
+  SampleRun run;
+  for (size_t u = 0; u < owner.size(); ++u) {
+    if (owner[u] == kElsewhere || m_tracers[owner[u]].get() == &resolving) continue;
+    run.resize(static_cast<size_t>(unit_samples[u]));
+    m_tracers[owner[u]]->readSamples(u * unit_size, run.size(), run.rgba.data(), run.xy.data());
+    resolving.writeSamples(u * unit_size, run.size(), run.rgba.data(), run.xy.data());
+  }
+  if (m_parts.shared())
+    resolveAcrossParts(sampling, opt, unit_samples, unit_size, resolving, result);
+  else
+    result.rgba = resolving.resolvePixels();
+}
+
+void Renderer::resolveAcrossParts(const SamplingOptions& sampling, const RenderOptions& opt,
+                                  const std::vector<std::uint64_t>& unit_samples, std::uint64_t unit_size,
+                                  DeviceTracer& resolving, RenderResult& result) {
+  // Part 0 resolves the frame; each other part sends it the pixels it can
+  // resolve alone and the samples part 0 needs for the rest
   // (render/part_resolve.h), or, in quincunx mode, whose corner samples are
   // shared by neighbouring pixels, all its samples.
-  const size_t resolver = survivor(result.stats);
-  DeviceTracer& resolving = *m_tracers[resolver];
-  std::vector<float> rgba, xy;
-  for (size_t u = 0; u < owner.size(); ++u) {
-    if (owner[u] == kElsewhere || owner[u] == resolver) continue;
-    const size_t n = static_cast<size_t>(unit_samples[u]);
-    rgba.resize(4 * n);
-    xy.resize(2 * n);
-    m_tracers[owner[u]]->readSamples(u * unit_size, n, rgba.data(), xy.data());
-    resolving.writeSamples(u * unit_size, n, rgba.data(), xy.data());
-  }
-  if (!m_parts.shared()) {
-    result.rgba = resolving.resolvePixels();
-    return;
-  }
+  const std::uint64_t total = sampleCount(sampling.mode, opt.width, opt.height, sampling.spp);
   const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * static_cast<std::uint64_t>(opt.height);
   // As the resolve kernel reaches: ceil(r - 1/2) rows and columns, in float.
   const auto reach_rows =
@@ -343,6 +360,7 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
     return partResolve(first, end, static_cast<std::uint64_t>(sampling.spp),
                        reach_rows * (static_cast<std::uint64_t>(opt.width) + 1));
   };
+  SampleRun run;
   ByteWriter out;
   if (m_parts.part != 0) {
     const PartResolve mine = partOf(m_parts.part);
@@ -350,12 +368,10 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
         resolving.resolvePixels(static_cast<size_t>(mine.first_pixel), static_cast<size_t>(mine.end_pixel - mine.first_pixel));
     out.putArray(own.data(), own.size());
     for (const auto& [first, end] : mine.samples) {
-      const size_t n = static_cast<size_t>(end - first);
-      rgba.resize(4 * n);
-      xy.resize(2 * n);
-      resolving.readSamples(first, n, rgba.data(), xy.data());
-      out.putArray(rgba.data(), 4 * n);
-      out.putArray(xy.data(), 2 * n);
+      run.resize(static_cast<size_t>(end - first));
+      resolving.readSamples(first, run.size(), run.rgba.data(), run.xy.data());
+      out.putArray(run.rgba.data(), run.rgba.size());
+      out.putArray(run.xy.data(), run.xy.size());
     }
   }
   const std::vector<Bytes> got = m_parts.exchange(false, out.take());
@@ -368,12 +384,10 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
     in.getArray(result.rgba.data() + 4 * theirs.first_pixel, 4 * (theirs.end_pixel - theirs.first_pixel));
     if (theirs.end_pixel > theirs.first_pixel) resolved.emplace_back(theirs.first_pixel, theirs.end_pixel);
     for (const auto& [first, end] : theirs.samples) {
-      const size_t n = static_cast<size_t>(end - first);
-      rgba.resize(4 * n);
-      xy.resize(2 * n);
-      in.getArray(rgba.data(), 4 * n);
-      in.getArray(xy.data(), 2 * n);
-      resolving.writeSamples(first, n, rgba.data(), xy.data());
+      run.resize(static_cast<size_t>(end - first));
+      in.getArray(run.rgba.data(), run.rgba.size());
+      in.getArray(run.xy.data(), run.xy.size());
+      resolving.writeSamples(first, run.size(), run.rgba.data(), run.xy.data());
     }
     in.expectDone();
   }

@@ -104,6 +104,11 @@ class Renderer {
   std::vector<size_t> deal(const std::vector<std::uint64_t>& unit_samples,
                            const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
                            const ProgressFn& progress);
+  // With frame parts: part 0 gathers what it needs from the others and resolves
+  // the frame (render/part_resolve.h).
+  void resolveAcrossParts(const SamplingOptions& sampling, const RenderOptions& opt,
+                          const std::vector<std::uint64_t>& unit_samples, std::uint64_t unit_size,
+                          DeviceTracer& resolving, RenderResult& result);
   static constexpr size_t kElsewhere = ~size_t{0};
   // Units of slices (with several devices, or parts) rather than one unit a pass.
   bool unitsOfSlices() const { return m_tracers.size() > 1 || m_parts.shared(); }

@@ -103,18 +103,21 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
   std::vector<DevicePace> pace(devices.size());
   auto worth = [&](std::size_t d) {  // under the lock
     if (!took[d]) return true;  // its first unit of the frame: its pace, measured afresh
-    const auto now = std::chrono::steady_clock::now();
     for (std::size_t e = 0; e < devices.size(); ++e) {
       DevicePace& p = pace[e];
       p.live = !devices[e].failed;
       p.samples_per_second = paceOf(devices[e], paces[e]);
       p.busy = holding[e] > 0 || !waiting[e];
       p.samples_left = p.busy && p.samples_per_second > 0
-                           ? std::max(0.0, holding[e] - p.samples_per_second *
-                                                            std::chrono::duration<double>(now - since[e]).count())
+                           ? std::max(0.0, holding[e] - p.samples_per_second * secondsSince(since[e]))
                            : 0.0;
     }
     return worthTaking(d, static_cast<double>(unit_samples[pending.front()]), pending_samples, pace);
+  };
+  auto release = [&](std::size_t d) {  // under the lock: device d holds no unit any more
+    --busy;
+    holding[d] = 0;
+    changed.notify_all();
   };
 
   auto worker = [&](std::size_t d) {
@@ -139,14 +142,11 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
         since[d] = std::chrono::steady_clock::now();
         ++busy;
       }
-      const auto start = std::chrono::steady_clock::now();
       try {
         unit(d, u);
       } catch (const DeviceError& e) {
         std::lock_guard<std::mutex> lock(mutex);
-        --busy;
-        holding[d] = 0;
-        changed.notify_all();
+        release(d);
         share.failed = true;
         share.failure = e.what();
         // Its unit and every unit it finished go to the others: a failed
@@ -167,23 +167,19 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
         break;
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex);
-        --busy;
-        holding[d] = 0;
-        changed.notify_all();
+        release(d);
         if (!fatal) fatal = std::current_exception();
         stop = true;
         break;
       }
       std::lock_guard<std::mutex> lock(mutex);
-      share.busy_seconds += secondsSince(start);
+      share.busy_seconds += secondsSince(since[d]);
       ++share.units;
       share.samples += unit_samples[u];
       result.owner[u] = d;
       done_by[d].push_back(u);
       ++finished;
-      --busy;
-      holding[d] = 0;
-      changed.notify_all();
+      release(d);
     }
     std::lock_guard<std::mutex> lock(mutex);
     --working;

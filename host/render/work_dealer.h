@@ -34,7 +34,7 @@ struct DealResult {
 struct DevicePace {
   bool live = true;                // not failed
   double samples_per_second = 0;   // 0: not known yet
-  bool busy = false;               // tracing a unit now
+  bool busy = false;               // tracing a unit, or between two
   double samples_left = 0;         // of that unit, by its pace (0 when not known)
 };
 
