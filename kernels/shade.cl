@@ -19,6 +19,7 @@
  * Primary rays with an AOV pixel (ray.aov_pixel >= 0, one sample per pixel
  * chosen by the sampler) also write that pixel's AOVs. The program is built
  * with the acceleration structure's options (kernels/accel/accel.h). */
+#include "common/math.h"
 #include "accel/accel.h"
 #include "sampling/dimensions.h"
 #include "shading/light.h"
@@ -131,8 +132,8 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
   float2 uv = (float2)(0.0f, 0.0f);
   prim_surface(geom, hit.prim, mesh, ray.time, hit, m->texture != TEXTURE_NONE, o, d, &n, &uv);
   float3 p = o + hit.t * d;
-  float3 i_dir = normalize(d);
-  bool inside = dot(n, i_dir) > 0.0f;
+  float3 i_dir = sb_normalize(d);
+  bool inside = sb_dot(n, i_dir) > 0.0f;
   float3 nf = inside ? -n : n; /* normal on the side the ray came from */
   float3 v = -i_dir;
   float3 tex = texture_color(m, texels, uv);
@@ -150,7 +151,7 @@ __kernel void shade(__global const RayGpu* rays, __global const HitGpu* hits, in
     float3 ldir, scale;
     float dist;
     light_sample(source, p_out, (float2)(0.0f, 0.0f), &ldir, &dist, &scale);
-    if (dot(nf, ldir) <= 0.0f) continue; /* the light is behind the surface */
+    if (sb_dot(nf, ldir) <= 0.0f) continue; /* the light is behind the surface */
     ++feelers;
     float3 brought = scale * local_light_term(m, kd, nf, ldir, v);
     light += brought * point_light_transmittance(ACCEL_ARGS, LIGHT_BUFFER_ARGS, materials, l, load3g(source->position),

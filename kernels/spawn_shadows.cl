@@ -6,6 +6,7 @@
  * and carries the light it would bring: the local model's term for that
  * direction times what the light sends. Empty slots (no surface, a light behind
  * it) are only tagged, and compaction removes them before occlude. */
+#include "common/math.h"
 #include "sampling/dimensions.h"
 #include "shading/light.h"
 #include "shading/material.h"
@@ -41,7 +42,7 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
   if (!light_sample(light, p_out, u, &ldir, &dist, &scale)) return;
   /* Each of a hit's feelers to one light estimates the whole light. */
   if (light->samples > 1) scale = scale / (float)light->samples;
-  if (dot(nf, ldir) <= 0.0f) return; /* the light is behind the surface */
+  if (sb_dot(nf, ldir) <= 0.0f) return; /* the light is behind the surface */
   __global const MaterialGpu* m = &materials[s->material];
   float3 brought = load3g(s->weight) * scale * local_light_term(m, load3g(s->kd), nf, ldir, load3g(s->v));
   /* An area light's sample sits on its shape: stop just short of it, so a

@@ -15,6 +15,10 @@ namespace {
 // Strict IEEE math (no -cl-fast-relaxed-math) keeps images bit-identical run to
 // run; see PERF-NOTES.md. Every program gets these.
 const char* kStandardOptions = "-cl-std=CL1.2";
+// And, where the device offers it, IEEE's division and square root, which with
+// the kernels' own elementary functions (kernels/common/same_bits_math.h) make
+// one device's image the same bits as another's.
+const char* kCorrectlyRoundedOption = "-cl-fp32-correctly-rounded-divide-sqrt";
 
 // Zero-sized OpenCL buffers are invalid; empty scenes still bind a buffer.
 constexpr size_t kMinBufferBytes = 16;
@@ -247,7 +251,9 @@ Context::Program& Context::program(const std::string& key, const std::string& so
 }
 
 cl_program Context::buildProgram(const std::string& source, const std::string& extra_options, const std::string& name) {
-  const std::string options = std::string(kStandardOptions) + (extra_options.empty() ? "" : " " + extra_options);
+  std::string options = kStandardOptions;
+  if (m_device.correctly_rounded_divide_sqrt) options += std::string(" ") + kCorrectlyRoundedOption;
+  if (!extra_options.empty()) options += " " + extra_options;
   const std::string cache_key = m_disk_cache.keyFor(m_device, options, source);
   cl_int status = CL_SUCCESS;
 

@@ -86,6 +86,9 @@ std::vector<DeviceDescription> listDevices() {
       desc.max_alloc_bytes = deviceValue<cl_ulong>(d, CL_DEVICE_MAX_MEM_ALLOC_SIZE);
       desc.max_work_group_size = deviceValue<size_t>(d, CL_DEVICE_MAX_WORK_GROUP_SIZE);
       desc.extensions = deviceString(d, CL_DEVICE_EXTENSIONS);
+      const auto fp = deviceValue<cl_device_fp_config>(d, CL_DEVICE_SINGLE_FP_CONFIG);
+      desc.correctly_rounded_divide_sqrt = (fp & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) != 0;
+      desc.denormals = (fp & CL_FP_DENORM) != 0;
       result.push_back(desc);
     }
   }

@@ -21,6 +21,12 @@ struct DeviceDescription {
   std::uint64_t max_alloc_bytes = 0;  // CL_DEVICE_MAX_MEM_ALLOC_SIZE: the largest single buffer
   std::size_t max_work_group_size = 1;
   std::string extensions;  // CL_DEVICE_EXTENSIONS, space-separated
+  // CL_DEVICE_SINGLE_FP_CONFIG: whether float division and sqrt can be asked
+  // to round correctly, and whether subnormals are kept. With both, a kernel
+  // that uses only kernels/common/same_bits_math.h gives the same bits here
+  // as on any other such device.
+  bool correctly_rounded_divide_sqrt = false;
+  bool denormals = false;
 
   bool hasExtension(const std::string& name) const;
 };

@@ -56,6 +56,11 @@ std::string assembleKernelSource(const std::string& entry_path, const std::strin
 std::string assembleKernelText(const std::string& text, const std::string& name) {
   std::set<std::string> seen;
   std::ostringstream out;
+  // Every program starts with the math that gives the same bits on every
+  // device, so that none can use OpenCL's own functions before it.
+  const std::string same_bits = "common/same_bits_math.h";
+  seen.insert(same_bits);
+  appendResolved(kernelFileText(same_bits), same_bits, seen, out);
   appendResolved(text, name, seen, out);
   return out.str();
 }

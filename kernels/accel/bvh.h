@@ -7,6 +7,7 @@
 #ifndef PRISM_ACCEL_BVH_H
 #define PRISM_ACCEL_BVH_H
 
+#include "common/math.h"
 #include "accel/leaf_packets.h"
 #include "shared/bvh_node_gpu.h"
 
@@ -82,7 +83,7 @@ PRISM_HOT void bvh_ray(BvhRay* ray, float3 o, float3 d, float time, __global con
  * whose t ties the best hit to the last bits (a vertex shared by several
  * triangles at a box corner) must still be reached. */
 #ifdef PRISM_BVH_MOTION
-#define BVH_SLAB(k) mix(n[k], n[7 + (k)], r->s)
+#define BVH_SLAB(k) sb_mix(n[k], n[7 + (k)], r->s)
 #else
 #define BVH_SLAB(k) n[k]
 #endif

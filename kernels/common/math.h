@@ -3,8 +3,10 @@
 #define PRISM_COMMON_MATH_H
 
 /* Keep a*b+c as two roundings everywhere, so the host's double reference and two
- * code shapes of one test agree (PERF-NOTES: contraction changed t on 40% of hits). */
+ * code shapes of one test agree (PERF-NOTES: contraction changed t on 40% of hits),
+ * and use only math whose results OpenCL fixes (same_bits_math.h). */
 #pragma OPENCL FP_CONTRACT OFF
+#include "common/same_bits_math.h"
 
 #define PRISM_INF INFINITY
 #define PRISM_PI 3.14159265358979f
@@ -36,10 +38,11 @@ inline float max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
 /* x^y for x > 0 and finite y, as exp2(y log2 x). PoCL's pow takes its slow,
  * exact path on every call: in the Whitted scene the specular highlight's pow
  * was three quarters of spawn_shadows' time (80 ms of 0.33 s at 640x480; 22 ms
- * with this). From OpenCL's 3-ulp log2 and exp2, the relative error is at most
- * (3.5 |y log2 x| ln 2 + 3) float ulps: under 2e-5 wherever the result is a
- * normal float (tests/kernels/math_test.cpp holds it to that against double pow). */
-inline float pow_positive(float x, float y) { return exp2(y * log2(x)); }
+ * with this). With log2 and exp2 within 3 ulps (same_bits_math.h; OpenCL's own
+ * promise is the same), the relative error is at most (3.5 |y log2 x| ln 2 + 3)
+ * float ulps: under 2e-5 wherever the result is a normal float
+ * (tests/kernels/math_test.cpp holds it to that against double pow). */
+inline float pow_positive(float x, float y) { return sb_exp2(y * sb_log2(x)); }
 
 /* Offset that moves a secondary ray's origin off the surface it leaves; scaled by
  * the point's magnitude because float spacing grows with it. */

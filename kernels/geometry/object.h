@@ -180,7 +180,7 @@ inline void object_surface(__global const ObjectGpu* ob, float3 o, float3 d, flo
       *uv = (float2)(hit.u, hit.v);
       break;
   }
-  *normal = ob->has_transform ? normalize(xform_normal(m, n)) : n;
+  *normal = ob->has_transform ? sb_normalize(xform_normal(m, n)) : n;
 }
 
 #endif

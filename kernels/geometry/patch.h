@@ -114,15 +114,15 @@ inline void patch_cut_curve(float* c, int stride, float a, float b) {
   for (int k = 0; k < 3; ++k) {
     float p0 = c[k], p1 = c[stride + k], p2 = c[2 * stride + k], p3 = c[3 * stride + k];
     if (b < 1.0f) {
-      float p01 = mix(p0, p1, b), p12 = mix(p1, p2, b), p23 = mix(p2, p3, b), p012 = mix(p01, p12, b);
-      p3 = mix(p012, mix(p12, p23, b), b);
+      float p01 = sb_mix(p0, p1, b), p12 = sb_mix(p1, p2, b), p23 = sb_mix(p2, p3, b), p012 = sb_mix(p01, p12, b);
+      p3 = sb_mix(p012, sb_mix(p12, p23, b), b);
       p2 = p012;
       p1 = p01;
     }
     if (a > 0.0f) {
       float s = a / b;
-      float p01 = mix(p0, p1, s), p12 = mix(p1, p2, s), p23 = mix(p2, p3, s), p123 = mix(p12, p23, s);
-      p0 = mix(mix(p01, p12, s), p123, s);
+      float p01 = sb_mix(p0, p1, s), p12 = sb_mix(p1, p2, s), p23 = sb_mix(p2, p3, s), p123 = sb_mix(p12, p23, s);
+      p0 = sb_mix(sb_mix(p01, p12, s), p123, s);
       p1 = p123;
       p2 = p23;
     }
@@ -202,21 +202,21 @@ inline bool patch_intersect(float3 o, float3 d, float tmin, float tmax, __global
   float3 axis = ad.x <= ad.y && ad.x <= ad.z ? (float3)(1.0f, 0.0f, 0.0f)
                 : ad.y <= ad.z               ? (float3)(0.0f, 1.0f, 0.0f)
                                              : (float3)(0.0f, 0.0f, 1.0f);
-  float3 n1 = normalize(cross(d, axis));
-  float3 n2 = normalize(cross(d, n1));
-  float dd = dot(d, d);
+  float3 n1 = sb_normalize(sb_cross(d, axis));
+  float3 n2 = sb_normalize(sb_cross(d, n1));
+  float dd = sb_dot(d, d);
   float q[48];
   for (int k = 0; k < 16; ++k) {
     float3 c = load3g(cp + 3 * k) - o;
-    q[3 * k] = dot(n1, c);
-    q[3 * k + 1] = dot(n2, c);
-    q[3 * k + 2] = dot(d, c) / dd;
+    q[3 * k] = sb_dot(n1, c);
+    q[3 * k + 1] = sb_dot(n2, c);
+    q[3 * k + 2] = sb_dot(d, c) / dd;
   }
   /* Newton cannot get closer than float's spacing of the coordinates. */
   float tol = fmax(p[10], 4e-6f * (max3(fabs(hi - lo)) + max3(fabs(o - 0.5f * (lo + hi)))));
   float best = tmax, best_u = 0.0f, best_v = 0.0f;
   /* Steeper than the normal cone allows for a tangent: one crossing at most. */
-  bool steep = fabs(dot(d, load3g(cp + PATCH_CONE))) > cp[PATCH_CONE + 3] * sqrt(dd);
+  bool steep = fabs(sb_dot(d, load3g(cp + PATCH_CONE))) > cp[PATCH_CONE + 3] * sqrt(dd);
   /* Parts still to look at: (u0, u1, v0, v1, cuts so far), depth first. */
   float stack[5 * (PATCH_MAX_CUTS + 1)];
   stack[0] = 0.0f, stack[1] = 1.0f, stack[2] = 0.0f, stack[3] = 1.0f, stack[4] = 0.0f;
@@ -231,8 +231,8 @@ inline bool patch_intersect(float3 o, float3 d, float tmin, float tmax, __global
     if (!patch_part_meets(part, tol, tmin, best)) continue;
     if (!steep && cuts < PATCH_MAX_CUTS && !patch_part_one_sign(part)) {
       /* Cut across the longer side (in the projection); both halves go on the stack. */
-      float lu = fast_length((float2)(part[36] - part[0], part[37] - part[1])) + fast_length((float2)(part[45] - part[9], part[46] - part[10]));
-      float lv = fast_length((float2)(part[9] - part[0], part[10] - part[1])) + fast_length((float2)(part[45] - part[36], part[46] - part[37]));
+      float lu = sb_length2((float2)(part[36] - part[0], part[37] - part[1])) + sb_length2((float2)(part[45] - part[9], part[46] - part[10]));
+      float lv = sb_length2((float2)(part[9] - part[0], part[10] - part[1])) + sb_length2((float2)(part[45] - part[36], part[46] - part[37]));
       bool along_u = lu >= lv;
       float mu = 0.5f * (u0 + u1), mv = 0.5f * (v0 + v1);
       for (int second = 0; second < 2; ++second) {
@@ -247,12 +247,12 @@ inline bool patch_intersect(float3 o, float3 d, float tmin, float tmax, __global
       continue;
     }
     float2 start = patch_start(part);
-    float u = mix(u0, u1, start.x), v = mix(v0, v1, start.y);
+    float u = sb_mix(u0, u1, start.x), v = sb_mix(v0, v1, start.y);
     if (!patch_newton(q, tol, &u, &v)) {
       u = 0.5f * (u0 + u1), v = 0.5f * (v0 + v1); /* a second start: the part's centre */
       if (!patch_newton(q, tol, &u, &v)) continue;
     }
-    float t = dot(patch_point(cp, u, v, 0, 0) - o, d) / dd;
+    float t = sb_dot(patch_point(cp, u, v, 0, 0) - o, d) / dd;
     if (t > tmin && t < best) {
       best = t;
       best_u = u;
@@ -273,8 +273,8 @@ inline float3 patch_normal(__global const float* cp, float u, float v) {
   for (int k = 0; k < 3; ++k) {
     float step = k == 0 ? 0.0f : (k == 1 ? 1e-3f : 1e-2f);
     patch_point(cp, u + (0.5f - u) * step, v + (0.5f - v) * step, &du, &dv);
-    float3 c = cross(du, dv);
-    float len = length(c);
+    float3 c = sb_cross(du, dv);
+    float len = sb_length(c);
     if (len > 0.0f) return c / len;
   }
   return n;
@@ -282,7 +282,7 @@ inline float3 patch_normal(__global const float* cp, float u, float v) {
 
 /* Texture coordinates: (u, v) in the patch the piece was cut from. */
 inline float2 patch_uv(__global const float* p, float u, float v) {
-  return (float2)(mix(p[0], p[1], u), mix(p[2], p[3], v));
+  return (float2)(sb_mix(p[0], p[1], u), sb_mix(p[2], p[3], v));
 }
 
 #endif

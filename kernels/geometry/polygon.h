@@ -51,7 +51,7 @@ inline bool polygon_inside_radial(__global const float* verts, int n, int iu, in
     float2 b = polygon_vertex(verts, k, iu, iv);
     if (polygon_on_edge(a, b, p)) return true;
     float2 ra = a - p, rb = b - p;
-    sum += atan2(polygon_cross(ra, rb), dot(ra, rb)); /* the signed angle from a to b seen from p */
+    sum += sb_atan2(polygon_cross(ra, rb), sb_dot2(ra, rb)); /* the signed angle from a to b seen from p */
     a = b;
   }
   return fabs(sum) > M_PI_F; /* +-2 pi inside, 0 outside */
@@ -73,9 +73,9 @@ inline bool polygon_inside_left_right(__global const float* verts, int n, int iu
 inline bool polygon_intersect(float3 o, float3 d, float tmin, float tmax, __global const float* q,
                               __global const float* verts, float* t_out) {
   float3 n = (float3)(q[0], q[1], q[2]);
-  float denom = dot(n, d);
+  float denom = sb_dot(n, d);
   if (denom == 0.0f) return false;
-  float t = -(dot(n, o) + q[3]) / denom;
+  float t = -(sb_dot(n, o) + q[3]) / denom;
   if (!(t > tmin && t < tmax)) return false;
   float3 x = o + t * d;
   int iu = (int)q[4], iv = (int)q[5], count = (int)q[6], test = (int)q[7];

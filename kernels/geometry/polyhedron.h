@@ -16,7 +16,7 @@ inline bool polyhedron_intersect(float3 o, float3 d, float tmin, float tmax, int
   int f_near = 0, f_far = 0;
   for (int i = 0; i < count; ++i) {
     float3 n = load3g(planes + 4 * i);
-    float dn = dot(n, d), value = dot(n, o) + planes[4 * i + 3]; /* value: <= 0 on the inner side */
+    float dn = sb_dot(n, d), value = sb_dot(n, o) + planes[4 * i + 3]; /* value: <= 0 on the inner side */
     if (dn == 0.0f) {
       if (value > 0.0f) return false;
       continue;

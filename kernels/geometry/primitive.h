@@ -9,6 +9,7 @@
 #ifndef PRISM_GEOMETRY_PRIMITIVE_H
 #define PRISM_GEOMETRY_PRIMITIVE_H
 
+#include "common/math.h"
 #include "geometry/object.h"
 #include "shared/mesh_gpu.h"
 
@@ -119,14 +120,14 @@ inline void prim_surface(const Geometry* g, int id, __global const MeshGpu* mesh
     __global const float* vn = g->mesh_data + mesh->normal_offset;
     uint3 k = idx - (uint3)(mesh->first_vertex);
     float3 smooth = w0 * vload3(k.x, vn) + hit.u * vload3(k.y, vn) + hit.v * vload3(k.z, vn);
-    float len = length(smooth);
-    if (len > 0.0f) n = dot(smooth, n) < 0.0f ? -smooth / len : smooth / len;
+    float len = sb_length(smooth);
+    if (len > 0.0f) n = sb_dot(smooth, n) < 0.0f ? -smooth / len : smooth / len;
   }
 #ifdef PRISM_MOTION
   float m[12];
   if (mesh->has_transform) {
     object_world_to_object((__global const ObjectGpu*)mesh, time, m);
-    n = normalize(xform_normal(m, n));
+    n = sb_normalize(xform_normal(m, n));
   }
 #endif
   *normal = n;

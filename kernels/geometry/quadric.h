@@ -83,9 +83,9 @@ inline bool quadric_intersect(float3 o, float3 d, float tmin, float tmax, __glob
   if (!quadric_clip_interval(o, d, clip, &b0, &b1, &f0, &f1)) return false;
   float3 ad = quadric_times(q, d);
   float3 lin = (float3)(q[6], q[7], q[8]);
-  float a = dot(d, ad);
-  float h = dot(o, ad) + 0.5f * dot(lin, d);
-  float c = dot(o, quadric_times(q, o)) + dot(lin, o) + q[9];
+  float a = sb_dot(d, ad);
+  float h = sb_dot(o, ad) + 0.5f * sb_dot(lin, d);
+  float c = sb_dot(o, quadric_times(q, o)) + sb_dot(lin, o) + q[9];
   float disc = h * h - a * c;
   /* The roots r0 <= r1, one of them infinite when a = 0 (the equation is
    * linear; the infinite one stands on the side where it stays <= 0, so the
@@ -144,7 +144,7 @@ inline bool quadric_intersect(float3 o, float3 d, float tmin, float tmax, __glob
 inline float3 quadric_normal(__global const float* q, float3 p, int face) {
   if (face == QUADRIC_SURFACE) {
     float3 g = quadric_gradient(q, p);
-    float len = length(g);
+    float len = sb_length(g);
     return len > 0.0f ? g / len : (float3)(0.0f, 1.0f, 0.0f);
   }
   int axis = (face - 1) / 2;
@@ -159,7 +159,7 @@ inline float2 quadric_uv(float3 p, __global const float* clip, int face) {
   float3 s = (p - lo) / (hi - lo);
   if (face == QUADRIC_SURFACE) {
     float3 c = 0.5f * (lo + hi);
-    return (float2)(0.5f + atan2(p.z - c.z, p.x - c.x) * (0.5f / M_PI_F), s.y);
+    return (float2)(0.5f + sb_atan2(p.z - c.z, p.x - c.x) * (0.5f / M_PI_F), s.y);
   }
   int axis = (face - 1) / 2;
   return axis == 0 ? (float2)(s.z, s.y) : axis == 1 ? (float2)(s.x, s.z) : (float2)(s.x, s.y);

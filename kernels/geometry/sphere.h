@@ -10,13 +10,13 @@
 /* Nearest t in (tmin, tmax), for rays starting outside or inside; d need not be unit. */
 inline bool sphere_intersect(float3 o, float3 d, float tmin, float tmax, float3 center, float radius, float* t_out) {
   float3 f = o - center;
-  float a = dot(d, d);
-  float b = dot(f, d); /* half of the usual b */
+  float a = sb_dot(d, d);
+  float b = sb_dot(f, d); /* half of the usual b */
   float3 l = f - (b / a) * d;
   float r2 = radius * radius;
-  float disc = a * (r2 - dot(l, l));
+  float disc = a * (r2 - sb_dot(l, l));
   if (disc < 0.0f) return false;
-  float c = dot(f, f) - r2;
+  float c = sb_dot(f, f) - r2;
   float q = -b - copysign(sqrt(disc), b);
   float t0 = q != 0.0f ? c / q : 0.0f;
   float t1 = q / a;
@@ -32,12 +32,12 @@ inline bool sphere_intersect(float3 o, float3 d, float tmin, float tmax, float3 
   return false;
 }
 
-inline float3 sphere_normal(float3 p, float3 center) { return normalize(p - center); }
+inline float3 sphere_normal(float3 p, float3 center) { return sb_normalize(p - center); }
 
 /* Longitude/latitude in [0,1]^2, for textures. */
 inline float2 sphere_uv(float3 n) {
-  float u = 0.5f + atan2(n.z, n.x) * (0.5f / M_PI_F);
-  float v = 0.5f - asin(clamp(n.y, -1.0f, 1.0f)) / M_PI_F;
+  float u = 0.5f + sb_atan2(n.z, n.x) * (0.5f / M_PI_F);
+  float v = 0.5f - sb_asin(clamp(n.y, -1.0f, 1.0f)) / M_PI_F;
   return (float2)(u, v);
 }
 

@@ -55,6 +55,6 @@ inline bool triangle_intersect(float3 o, float3 d, float tmin, float tmax, float
   return triangle_intersect_from(&s, d, tmin, tmax, t_out, u_out, v_out);
 }
 
-inline float3 triangle_normal(float3 v0, float3 v1, float3 v2) { return normalize(cross(v1 - v0, v2 - v0)); }
+inline float3 triangle_normal(float3 v0, float3 v1, float3 v2) { return sb_normalize(sb_cross(v1 - v0, v2 - v0)); }
 
 #endif

@@ -13,7 +13,7 @@
 inline float3 camera_ray_dir(__global const CameraGpu* camera, float fx, float fy) {
   float x = 2.0f * fx / (float)camera->width - 1.0f;
   float y = 1.0f - 2.0f * fy / (float)camera->height;
-  return normalize(load3g(camera->forward) + x * load3g(camera->right) + y * load3g(camera->up));
+  return sb_normalize(load3g(camera->forward) + x * load3g(camera->right) + y * load3g(camera->up));
 }
 
 /* The ray of film position (fx, fy) for time sample u_time and lens sample
@@ -27,24 +27,24 @@ inline void camera_ray(__global const CameraGpu* camera, float fx, float fy, flo
   float3 right = load3g(camera->right), up = load3g(camera->up);
   if (camera->moving) {
     float s = close > open ? (*time - open) / (close - open) : 0.0f;
-    origin = mix(origin, load3g(camera->origin_end), s);
-    float3 look = mix(load3g(camera->look_at), load3g(camera->look_at_end), s);
-    forward = normalize(look - origin);
-    float3 r = normalize(cross(forward, load3g(camera->world_up)));
+    origin = sb_mix(origin, load3g(camera->origin_end), s);
+    float3 look = sb_mix(load3g(camera->look_at), load3g(camera->look_at_end), s);
+    forward = sb_normalize(look - origin);
+    float3 r = sb_normalize(sb_cross(forward, load3g(camera->world_up)));
     float tan_half = camera->world_up[3];
     right = r * (tan_half * (float)camera->width / (float)camera->height);
-    up = cross(r, forward) * tan_half;
+    up = sb_cross(r, forward) * tan_half;
   }
   float x = 2.0f * fx / (float)camera->width - 1.0f;
   float y = 1.0f - 2.0f * fy / (float)camera->height;
-  float3 dir = normalize(forward + x * right + y * up);
+  float3 dir = sb_normalize(forward + x * right + y * up);
   if (camera->lens_radius > 0.0f) {
     /* Every ray through the lens from this film point meets the pinhole ray on
      * the plane in focus, focus_distance along the view direction. */
-    float3 focus = origin + dir * (camera->focus_distance / dot(dir, forward));
+    float3 focus = origin + dir * (camera->focus_distance / sb_dot(dir, forward));
     float2 l = concentric_disk(u_lens) * camera->lens_radius;
-    origin = origin + l.x * normalize(right) + l.y * normalize(up);
-    dir = normalize(focus - origin);
+    origin = origin + l.x * sb_normalize(right) + l.y * sb_normalize(up);
+    dir = sb_normalize(focus - origin);
   }
   *o = origin;
   *d = dir;

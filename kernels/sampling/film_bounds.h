@@ -31,8 +31,8 @@ inline FilmProjector film_projector(__global const CameraGpu* camera) {
   p.f = load3g(camera->forward);
   p.r = load3g(camera->right);
   p.u = load3g(camera->up);
-  p.rr = dot(p.r, p.r);
-  p.uu = dot(p.u, p.u);
+  p.rr = sb_dot(p.r, p.r);
+  p.uu = sb_dot(p.u, p.u);
   p.r_len = sqrt(p.rr);
   p.u_len = sqrt(p.uu);
   p.w = (float)camera->width;
@@ -57,7 +57,7 @@ inline FilmHull film_hull_empty(void) {
 inline void film_hull_add(const FilmProjector* c, float3 p, FilmHull* h) {
   float3 v = p - c->o;
   float len = fabs(v.x) + fabs(v.y) + fabs(v.z); /* >= |v| */
-  float z = dot(v, c->f);
+  float z = sb_dot(v, c->f);
   float tol = 1e-4f * len;
   if (!(z >= -tol)) { /* NaN counts as near: never culled */
     if (z < -tol)
@@ -71,7 +71,7 @@ inline void film_hull_add(const FilmProjector* c, float3 p, FilmHull* h) {
     return;
   }
   h->front += 1;
-  float sx = dot(v, c->r) / (c->rr * z), sy = dot(v, c->u) / (c->uu * z);
+  float sx = sb_dot(v, c->r) / (c->rr * z), sy = sb_dot(v, c->u) / (c->uu * z);
   float rel = 1e-6f * len / z;
   float pad_x = 0.1f + 0.5f * c->w * rel * (fabs(sx) + c->r_len / c->rr);
   float pad_y = 0.1f + 0.5f * c->h * rel * (fabs(sy) + c->u_len / c->uu);

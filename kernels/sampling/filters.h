@@ -4,6 +4,7 @@
 #ifndef PRISM_SAMPLING_FILTERS_H
 #define PRISM_SAMPLING_FILTERS_H
 
+#include "common/math.h"
 #include "sampling/sample_modes.h"
 
 inline float filter_radius(int kind) {
@@ -34,7 +35,7 @@ inline float filter_1d(int kind, float d) {
     case FILTER_TENT: return fmax(0.0f, 1.0f - fabs(d));
     case FILTER_GAUSSIAN:
       /* Shifted down so it reaches zero at the radius instead of being cut there. */
-      return fmax(0.0f, exp(-GAUSSIAN_ALPHA * d * d) - exp(-GAUSSIAN_ALPHA * GAUSSIAN_RADIUS * GAUSSIAN_RADIUS));
+      return fmax(0.0f, sb_exp(-GAUSSIAN_ALPHA * d * d) - sb_exp(-GAUSSIAN_ALPHA * GAUSSIAN_RADIUS * GAUSSIAN_RADIUS));
     case FILTER_MITCHELL: return mitchell_1d(d);
   }
   /* Box: half-open [-0.5, 0.5), so a sample on a pixel border counts in one pixel. */

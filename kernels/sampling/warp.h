@@ -17,7 +17,7 @@ inline float2 concentric_disk(float2 u) {
     r = s.y;
     theta = (PRISM_PI / 2.0f) - (PRISM_PI / 4.0f) * (s.x / s.y);
   }
-  return (float2)(r * cos(theta), r * sin(theta));
+  return (float2)(r * sb_cos(theta), r * sb_sin(theta));
 }
 
 #endif

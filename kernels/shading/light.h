@@ -22,7 +22,7 @@ inline bool light_sample(__global const LightGpu* light, float3 p, float2 u, flo
   float3 color = load3g(light->color);
   if (light->type == LIGHT_POINT) {
     float3 to_light = load3g(light->position) - p;
-    *dist = length(to_light);
+    *dist = sb_length(to_light);
     *dir = to_light / *dist;
     *scale = color;
     return true;
@@ -35,7 +35,7 @@ inline bool light_sample(__global const LightGpu* light, float3 p, float2 u, flo
     /* Uniform in the cone of directions the sphere fills (its visible cap). */
     float r = light->position[3];
     float3 to_c = c - p;
-    float dc = length(to_c);
+    float dc = sb_length(to_c);
     float3 w = to_c / dc;
     float3 t, b;
     orthonormal_basis(w, &t, &b);
@@ -52,9 +52,9 @@ inline bool light_sample(__global const LightGpu* light, float3 p, float2 u, flo
       solid_angle = 4.0f * PRISM_PI;
     }
     sin_t = sqrt(fmax(0.0f, 1.0f - cos_t * cos_t));
-    float3 d = normalize(sin_t * cos(phi) * t + sin_t * sin(phi) * b + cos_t * w);
+    float3 d = sb_normalize(sin_t * sb_cos(phi) * t + sin_t * sb_sin(phi) * b + cos_t * w);
     /* First crossing of the sphere along d (the exit one from inside). */
-    float proj = dot(to_c, d);
+    float proj = sb_dot(to_c, d);
     float disc = fmax(0.0f, r * r - (dc * dc - proj * proj));
     float root = sqrt(disc);
     float hit = dc > r ? proj - root : proj + root;
@@ -73,11 +73,11 @@ inline bool light_sample(__global const LightGpu* light, float3 p, float2 u, flo
     y = c + d.x * e1 + d.y * e2;
   }
   float3 to_y = y - p;
-  float r2 = dot(to_y, to_y);
+  float r2 = sb_dot(to_y, to_y);
   if (!(r2 > 0.0f)) return false;
   float r = sqrt(r2);
   *dir = to_y / r;
-  float cos_y = fabs(dot(load3g(light->normal), *dir));
+  float cos_y = fabs(sb_dot(load3g(light->normal), *dir));
   *dist = r;
   *scale = color * (light->color[3] * cos_y / (r2 * PRISM_PI));
   return cos_y > 0.0f;
@@ -92,7 +92,7 @@ inline float light_hit(__global const LightGpu* light, float3 o, float3 d, float
   if (light->type == LIGHT_SPHERE) {
     float r = light->position[3];
     float3 oc = o - c;
-    float a = dot(d, d), b = dot(oc, d), q = dot(oc, oc) - r * r;
+    float a = sb_dot(d, d), b = sb_dot(oc, d), q = sb_dot(oc, oc) - r * r;
     float disc = b * b - a * q;
     if (disc < 0.0f) return tmax;
     float root = sqrt(disc);
@@ -101,13 +101,13 @@ inline float light_hit(__global const LightGpu* light, float3 o, float3 d, float
     return t > 0.0f && t < tmax ? t : tmax;
   }
   float3 n = load3g(light->normal);
-  float dn = dot(d, n);
+  float dn = sb_dot(d, n);
   if (dn == 0.0f) return tmax;
-  float t = dot(c - o, n) / dn;
+  float t = sb_dot(c - o, n) / dn;
   if (!(t > 0.0f && t < tmax)) return tmax;
   float3 q = o + t * d - c;
   float3 e1 = load3g(light->edge1), e2 = load3g(light->edge2);
-  float a = dot(q, e1) / dot(e1, e1), b = dot(q, e2) / dot(e2, e2);
+  float a = sb_dot(q, e1) / sb_dot(e1, e1), b = sb_dot(q, e2) / sb_dot(e2, e2);
   if (light->type == LIGHT_QUAD) return a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f ? t : tmax;
   return a * a + b * b <= 1.0f ? t : tmax; /* disk: edges are orthogonal radii */
 }

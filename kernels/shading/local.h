@@ -12,14 +12,14 @@
 /* n: unit normal facing the viewer, l: unit direction to the light, v: unit
  * direction to the viewer; n·l > 0 is the caller's precondition. */
 inline float3 local_light_term(__global const MaterialGpu* m, float3 kd, float3 n, float3 l, float3 v) {
-  float n_dot_l = dot(n, l);
+  float n_dot_l = sb_dot(n, l);
   if (m->model == SHADING_COOK_TORRANCE)
     return kd * n_dot_l + load3g(m->specular) * cook_torrance(n, l, v, m->roughness, m->distribution, m->ior);
   float spec_base;
   if (m->model == SHADING_BLINN) {
-    spec_base = dot(n, normalize(l + v));
+    spec_base = sb_dot(n, sb_normalize(l + v));
   } else {
-    spec_base = dot(reflect_dir(-l, n), v);
+    spec_base = sb_dot(reflect_dir(-l, n), v);
   }
   float spec = spec_base > 0.0f ? pow_positive(spec_base, m->shininess) : 0.0f;
   return kd * n_dot_l + load3g(m->specular) * spec;

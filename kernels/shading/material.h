@@ -20,7 +20,7 @@ inline float3 sample_phong_lobe(float3 axis, float exponent, float2 u) {
   float phi = 2.0f * PRISM_PI * u.y;
   float3 t, b;
   orthonormal_basis(axis, &t, &b);
-  return normalize(sin_t * cos(phi) * t + sin_t * sin(phi) * b + cos_t * axis);
+  return sb_normalize(sin_t * sb_cos(phi) * t + sin_t * sb_sin(phi) * b + cos_t * axis);
 }
 
 /* A sampled direction that left the side of the surface it belongs to is
@@ -28,8 +28,8 @@ inline float3 sample_phong_lobe(float3 axis, float exponent, float2 u) {
  * instead of being lost or leaking through. side = +1: the viewer's side of
  * unit normal nf; -1: the other. */
 inline float3 fold_to_side(float3 d, float3 nf, float side) {
-  float dn = dot(d, nf) * side;
-  return dn > 0.0f ? d : d - 2.0f * dot(d, nf) * nf;
+  float dn = sb_dot(d, nf) * side;
+  return dn > 0.0f ? d : d - 2.0f * sb_dot(d, nf) * nf;
 }
 
 /* The reflected ray's direction for incident i_dir at unit normal nf (facing

@@ -25,7 +25,7 @@ inline float microfacet_d(float cos_h, float alpha, int distribution) {
    * exponential and cos^4 underflow (0 / 0); the quotient's limit is 0. */
   float x = (1.0f - c2) / (c2 * a2);
   if (!(x < 80.0f)) return 0.0f;
-  return exp(-x) / (PRISM_PI * a2 * c2 * c2);
+  return sb_exp(-x) / (PRISM_PI * a2 * c2 * c2);
 }
 
 /* Smith's one-sided masking for GGX at a direction with cosine c to n. */
@@ -55,10 +55,10 @@ inline float fresnel_dielectric(float cos_i, float eta) {
  * kd (n.l), for unit n, l (to the light) and v (to the viewer) with n.l > 0.
  * fresnel_eta <= 0 stands for F = 1 (the tests' perfect reflector). */
 inline float cook_torrance(float3 n, float3 l, float3 v, float alpha, int distribution, float fresnel_eta) {
-  float n_l = dot(n, l), n_v = dot(n, v);
+  float n_l = sb_dot(n, l), n_v = sb_dot(n, v);
   if (n_l <= 0.0f || n_v <= 0.0f) return 0.0f;
-  float3 h = normalize(l + v);
-  float n_h = dot(n, h), v_h = dot(v, h);
+  float3 h = sb_normalize(l + v);
+  float n_h = sb_dot(n, h), v_h = sb_dot(v, h);
   if (n_h <= 0.0f || v_h <= 0.0f) return 0.0f;
   float f = fresnel_eta > 0.0f ? fresnel_dielectric(v_h, fresnel_eta) : 1.0f;
   float d = microfacet_d(n_h, alpha, distribution);

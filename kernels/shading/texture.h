@@ -32,9 +32,9 @@ inline float3 texture_image(__global const MaterialGpu* m, __global const float4
   int ia = texture_wrap(i0, w, m->wrap), ib = texture_wrap(i0 + 1, w, m->wrap);
   int ja = texture_wrap(j0, h, m->wrap), jb = texture_wrap(j0 + 1, h, m->wrap);
   __global const float4* img = texels + m->image_offset;
-  float3 top = mix(img[ja * w + ia].xyz, img[ja * w + ib].xyz, fx);
-  float3 bottom = mix(img[jb * w + ia].xyz, img[jb * w + ib].xyz, fx);
-  return mix(top, bottom, fy);
+  float3 top = sb_mix(img[ja * w + ia].xyz, img[ja * w + ib].xyz, fx);
+  float3 bottom = sb_mix(img[jb * w + ia].xyz, img[jb * w + ib].xyz, fx);
+  return sb_mix(top, bottom, fy);
 }
 
 /* Colour that multiplies ambient and diffuse at surface coordinates uv. */

@@ -26,9 +26,9 @@ __kernel void microfacet_probe(__global const float* in, __global const int* dis
   float3 n = (float3)(0.0f, 0.0f, 1.0f);
   float3 l = vload3(0, in + 8 * k), v = vload3(0, in + 8 * k + 3);
   float alpha = in[8 * k + 6], eta = in[8 * k + 7];
-  float3 h = normalize(l + v);
-  out[3 * k] = microfacet_d(dot(n, h), alpha, dist[k]);
-  out[3 * k + 1] = fresnel_dielectric(dot(v, h), eta);
+  float3 h = sb_normalize(l + v);
+  out[3 * k] = microfacet_d(sb_dot(n, h), alpha, dist[k]);
+  out[3 * k + 1] = fresnel_dielectric(sb_dot(v, h), eta);
   out[3 * k + 2] = cook_torrance(n, l, v, alpha, dist[k], eta);
 }
 )";
