@@ -107,17 +107,18 @@ std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<Object
     accel->stats.mean_prims_per_leaf = static_cast<double>(primitives);
     accel->stats.sah_cost = static_cast<double>(primitives);
     writeSceneHeader(Aabb(), *accel);
+    accel->kernel_options += " " + primitiveKernelOptions(objects);
   } else {
     PrimitiveSet prims = gatherPrimitives(objects, options.threads);
     e.build(objects, prims, options, *accel);
+    // Moving objects' code is compiled only into the programs of scenes that
+    // have some, and so is each larger kind's (quadrics, polygons, polyhedra, patches).
+    accel->kernel_options += " " + primitiveKernelOptions(prims.kinds, prims.any_moving);
     accel->unbounded = prims.unbounded;
     accel->stats.primitives = prims.bounded.size();
     accel->stats.unbounded = prims.unbounded.size();
   }
   if (options.kdop_objects && kind != AccelKind::None) accel->kernel_options += " -DPRISM_OBJECT_KDOP";
-  // Moving objects' code is compiled only into the programs of scenes that
-  // have some, and so is each larger kind's (quadrics, polygons, polyhedra, patches).
-  accel->kernel_options += " " + primitiveKernelOptions(objects);
   accel->stats.bytes = accel->nodes.size() * sizeof(AccelWord) + accel->packets.size() * sizeof(TriPacketGpu) +
                        accel->unbounded.size() * sizeof(std::int32_t);
   accel->stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -28,7 +28,7 @@ namespace {
 
 constexpr int kMaxLeafPrims = 16;      // at most 4 triangle + 4 other packets < BVH_LEAF_MAX_PACKETS
 constexpr double kTraversalCost = 2.0;  // PERF-NOTES: traversal cost 2 against a 4-wide packet test of 1
-constexpr int kParallelPrims = 4096;    // subtrees at least this big may get their own thread
+constexpr int kParallelPrims = 1024;    // subtrees at least this big may go to another thread
 constexpr int kMedianDepth = 48;        // below this depth, splits are object medians (bounded depth)
 
 struct PrimRef {
@@ -136,25 +136,38 @@ struct Split {
 constexpr int kTwoBinSetsPrims = 1024;  // nodes this big bin into two sets (binnedSplit)
 
 // The bins of one node on the three axes: the boxes and counts of the
-// references whose centroids fall in each (the first `bins` of each axis used).
+// references whose centroids fall in each (the first `bins` of each axis used,
+// and only those made empty: small nodes, most of the tree, use few bins).
 struct BinSet {
   static constexpr int kBins = BinMap::kMaxBins;
-  Box4 box[3][kBins];
-  int counts[3][kBins] = {};
+  // A box as its two corners (Box4's own members would all be initialised).
+  Float4 lo[3][kBins], hi[3][kBins];
+  int counts[3][kBins];
   int bins;
 
-  explicit BinSet(int count) : bins(count) {}
+  explicit BinSet(int count) : bins(count) {
+    const Box4 empty;
+    for (int axis = 0; axis < 3; ++axis)
+      for (int b = 0; b < bins; ++b) {
+        lo[axis][b] = empty.lo;
+        hi[axis][b] = empty.hi;
+        counts[axis][b] = 0;
+      }
+  }
   void add(const PrimRef& r, Int4 bin) {
-    const Float4 lo = r.lo4(), hi = r.hi4();
+    const Float4 l = r.lo4(), h = r.hi4();
     for (int axis = 0; axis < 3; ++axis) {
-      box[axis][bin[axis]].extend(lo, hi);
-      ++counts[axis][bin[axis]];
+      const int b = bin[axis];
+      lo[axis][b] = lowerOf(l, lo[axis][b]);
+      hi[axis][b] = upperOf(h, hi[axis][b]);
+      ++counts[axis][b];
     }
   }
   void add(const BinSet& other) {
     for (int axis = 0; axis < 3; ++axis)
       for (int b = 0; b < bins; ++b) {
-        box[axis][b].extend(other.box[axis][b]);
+        lo[axis][b] = lowerOf(other.lo[axis][b], lo[axis][b]);
+        hi[axis][b] = upperOf(other.hi[axis][b], hi[axis][b]);
         counts[axis][b] += other.counts[axis][b];
       }
   }
@@ -162,7 +175,7 @@ struct BinSet {
 
 class Bvh2Builder {
  public:
-  Bvh2Builder(PrimRefs& refs, ThreadBudget& budget) : m_refs(refs), m_budget(budget) {}
+  Bvh2Builder(PrimRefs& refs, ThreadBudget& budget) : m_refs(refs), m_pool(budget) {}
 
   // `all`: what every reference spans.
   std::vector<Node2> build(const RefExtent& all) {
@@ -174,7 +187,8 @@ class Bvh2Builder {
     m_nodes.reset(new NodeRoom[std::max(1, 2 * n - 1)]);
     m_scratch.resize(m_refs.size());
     m_next = 1;
-    buildNode(0, 0, n, 0, all);
+    m_pool.run(Subtree{0, 0, n, 0, all},
+               [this](const Subtree& t) { buildNode(t.index, t.begin, t.end, t.depth, t.extent); });
     std::vector<Node2> nodes;
     nodes.reserve(m_next.load());
     for (int i = 0; i < m_next.load(); ++i) nodes.push_back(*node(i));
@@ -234,10 +248,9 @@ class Bvh2Builder {
     const int first_child = m_next.fetch_add(2);
     node.left = first_child;
     node.right = first_child + 1;
-    TaskGroup group(m_budget);
-    group.run([=] { buildNode(first_child, begin, mid, depth + 1, left); }, mid - begin >= kParallelPrims);
+    if (mid - begin < kParallelPrims || !m_pool.offer(Subtree{first_child, begin, mid, depth + 1, left}))
+      buildNode(first_child, begin, mid, depth + 1, left);
     buildNode(first_child + 1, mid, end, depth + 1, right);
-    group.wait();
   }
 
   // Moves the references whose bin on `axis` lies before `split_bin` to the
@@ -300,7 +313,7 @@ class Bvh2Builder {
       double cost_here = 0;
       for (int b = bins - 1; b > 0; --b) {
         if (count_of[b]) {
-          acc.extend(set.box[axis][b]);
+          acc.extend(set.lo[axis][b], set.hi[axis][b]);
           count += count_of[b];
           cost_here = acc.area() * blocks(count);
         }
@@ -310,7 +323,7 @@ class Bvh2Builder {
       count = 0;
       for (int b = 1; b < bins; ++b) {
         if (!count_of[b - 1]) continue;
-        acc.extend(set.box[axis][b - 1]);
+        acc.extend(set.lo[axis][b - 1], set.hi[axis][b - 1]);
         count += count_of[b - 1];
         if (count == end - begin) break;
         const double cost = acc.area() * blocks(count) + right_cost[b];
@@ -322,7 +335,12 @@ class Bvh2Builder {
 
   PrimRefs& m_refs;
   PrimRefs m_scratch;  // the partition's, range for range as m_refs
-  ThreadBudget& m_budget;
+  // A node still to build: its room, its references and what they span.
+  struct Subtree {
+    int index, begin, end, depth;
+    RefExtent extent;
+  };
+  TaskPool<Subtree> m_pool;
   // Node i is constructed in room i when buildNode claims it.
   struct NodeRoom {
     alignas(Node2) unsigned char bytes[sizeof(Node2)];
@@ -637,6 +655,7 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
   std::vector<RefExtent> run_extent(runs);
   forEachRun(budget, runs, [&](std::size_t r) {
     const auto [first, end] = runRange(refs.size(), r, runs);
+    RefExtent extent;  // here, not in run_extent[r], which shares a cache line with the next run's
     for (std::size_t i = first; i < end; ++i) {
       Aabb b = prims.bounds[i];
       if (linear)
@@ -646,8 +665,9 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
         }
       refs[i] = PrimRef{{b.lo[0], b.lo[1], b.lo[2]}, prims.bounded[i], {b.hi[0], b.hi[1], b.hi[2]},
                         static_cast<std::int32_t>(i)};
-      run_extent[r].add(refs[i]);
+      extent.add(refs[i]);
     }
+    run_extent[r] = extent;
   });
   RefExtent all;
   for (const RefExtent& e : run_extent) {

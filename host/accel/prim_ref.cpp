@@ -259,33 +259,77 @@ bool objectLinearBounds(const ObjectGpu& ob, Aabb* open, Aabb* close) {
   return true;
 }
 
+namespace {
+
+// The kinds bit of one primitive, as primitiveKernelOptions counts them.
+unsigned kindBit(const ObjectGpu& ob) { return ob.type >= 0 && ob.type < 32 ? 1u << ob.type : 0u; }
+
+}  // namespace
+
 PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads) {
   PrimitiveSet set;
   const std::size_t count = primitiveCount(objects);
   // The static objects' boxes first, on every thread in contiguous runs, each
   // into its own arrays (the bounds are most of the work, and the arrays' first
   // writes cost page faults, which the threads then share); moving objects are
-  // bounded below, in order.
+  // bounded below, in order. Each run also notes what the merge needs to know:
+  // whether all its objects are bounded and static, the union of their boxes,
+  // and their kinds (for the kernels' build options).
+  struct Run {
+    std::vector<Aabb> boxes;
+    std::vector<unsigned char> finite;
+    bool plain = true;  // every object bounded and static
+    Aabb scene;
+    unsigned kinds = 0;
+    bool any_moving = false;
+  };
   ThreadBudget budget(threads);
   const std::size_t runs = runsFor(budget, count, kParallelBoundsPrims);
-  std::vector<std::vector<Aabb>> run_boxes(runs);
-  std::vector<std::vector<unsigned char>> run_finite(runs);
+  std::vector<Run> run_of(runs);
   forEachRun(budget, runs, [&](std::size_t r) {
     const auto [first, end] = runRange(count, r, runs);
-    run_boxes[r].resize(end - first);
-    run_finite[r].resize(end - first);
-    for (std::size_t i = first; i < end; ++i)
-      if (objects[i].has_transform != OBJECT_MOVING)
-        run_finite[r][i - first] = objectBounds(objects[i], &run_boxes[r][i - first]);
+    Run run;  // filled here, not in run_of[r], whose neighbour another thread writes
+    run.boxes.resize(end - first);
+    run.finite.resize(end - first);
+    for (std::size_t i = first; i < end; ++i) {
+      const ObjectGpu& ob = objects[i];
+      run.kinds |= kindBit(ob);
+      if (ob.has_transform == OBJECT_MOVING) {
+        run.plain = false;
+        run.any_moving = true;
+        continue;
+      }
+      const bool finite = objectBounds(ob, &run.boxes[i - first]);
+      run.finite[i - first] = finite;
+      if (finite) run.scene.extend(run.boxes[i - first]);
+      run.plain = run.plain && finite;
+    }
+    run_of[r] = std::move(run);
   });
+  for (const Run& run : run_of) {
+    set.kinds |= run.kinds;
+    set.any_moving = set.any_moving || run.any_moving;
+  }
+  if (std::all_of(run_of.begin(), run_of.end(), [](const Run& run) { return run.plain; })) {
+    // Every object bounded and static (a mesh scene without planes): the
+    // boxes as they are, joined.
+    set.bounded.resize(count);
+    for (std::size_t i = 0; i < count; ++i) set.bounded[i] = static_cast<std::int32_t>(i);
+    set.bounds.reserve(count);
+    for (const Run& run : run_of) {
+      set.bounds.insert(set.bounds.end(), run.boxes.begin(), run.boxes.end());
+      set.scene.extend(run.scene);
+    }
+    return set;
+  }
   set.bounded.reserve(count);
   set.bounds.reserve(count);
   for (std::size_t i = 0, r = 0, first = 0; i < count; ++i) {
     while (i >= runRange(count, r, runs).second) first = runRange(count, ++r, runs).first;
     const ObjectGpu& ob = objects[i];
     const bool moves = ob.has_transform == OBJECT_MOVING;
-    Aabb b = run_boxes[r][i - first], open, close;
-    if (moves ? movingBounds(ob, &b, &open, &close) : run_finite[r][i - first] != 0) {
+    Aabb b = run_of[r].boxes[i - first], open, close;
+    if (moves ? movingBounds(ob, &b, &open, &close) : run_of[r].finite[i - first] != 0) {
       if (moves && !set.moving) {  // the first moving one: the static ones so far keep one box
         set.moving = true;
         set.shutter_open = motionOf(ob).shutter_open;
@@ -316,13 +360,18 @@ std::size_t primitiveCount(const std::vector<ObjectGpu>& objects) {
 }
 
 std::string primitiveKernelOptions(const std::vector<ObjectGpu>& objects) {
-  unsigned kinds = 1u << OBJECT_SPHERE | 1u << OBJECT_BOX | 1u << OBJECT_PLANE | 1u << OBJECT_TRIANGLE;
+  unsigned kinds = 0;
   bool moving = false;
   const std::size_t count = primitiveCount(objects);
   for (std::size_t i = 0; i < count; ++i) {
-    if (objects[i].type >= 0 && objects[i].type < 32) kinds |= 1u << objects[i].type;
+    kinds |= kindBit(objects[i]);
     moving = moving || objects[i].has_transform == OBJECT_MOVING;
   }
+  return primitiveKernelOptions(kinds, moving);
+}
+
+std::string primitiveKernelOptions(unsigned kinds, bool moving) {
+  kinds |= 1u << OBJECT_SPHERE | 1u << OBJECT_BOX | 1u << OBJECT_PLANE | 1u << OBJECT_TRIANGLE;
   std::string options = moving ? std::string(kMotionKernelOption) + " " : std::string();
   return options + "-DPRISM_KINDS=" + std::to_string(kinds);
 }

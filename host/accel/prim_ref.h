@@ -33,6 +33,10 @@ struct PrimitiveSet {
   // then the linear bounds of every bounded primitive (objectLinearBounds).
   bool moving = false;
   float shutter_open = 0, shutter_close = 0;
+  // Over every primitive, bounded or not: bit k set where some has type k
+  // (OBJECT_*), and whether some moves (primitiveKernelOptions).
+  unsigned kinds = 0;
+  bool any_moving = false;
   std::vector<Aabb> bounds_open, bounds_close;
 };
 
@@ -53,5 +57,7 @@ constexpr const char* kMotionKernelOption = "-DPRISM_MOTION";
 // (kernels/geometry/object.h) naming the kinds to intersect: spheres, boxes,
 // planes and triangles always, the larger kinds only where the scene has some.
 std::string primitiveKernelOptions(const std::vector<ObjectGpu>& objects);
+// The same from what gatherPrimitives found (PrimitiveSet::kinds and moving).
+std::string primitiveKernelOptions(unsigned kinds, bool moving);
 
 }  // namespace prism

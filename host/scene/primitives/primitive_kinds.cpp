@@ -1,4 +1,5 @@
 // The registration of every primitive kind.
+#include <array>
 #include <cstring>
 #include <stdexcept>
 
@@ -20,9 +21,14 @@ const PrimitiveKind& primitiveKind(ObjectType type) {
 }
 
 const PrimitiveKind* primitiveKindOfGpu(int gpu_type) {
-  for (const PrimitiveKind* k : primitiveKinds())
-    if (k->gpu_type == gpu_type) return k;
-  return nullptr;
+  // Asked twice for every primitive a builder bounds: a table by type.
+  static const std::array<const PrimitiveKind*, 32> table = [] {
+    std::array<const PrimitiveKind*, 32> t{};
+    for (const PrimitiveKind* k : primitiveKinds())
+      if (k->gpu_type >= 0 && k->gpu_type < 32 && !t[k->gpu_type]) t[k->gpu_type] = k;
+    return t;
+  }();
+  return gpu_type >= 0 && gpu_type < 32 ? table[gpu_type] : nullptr;
 }
 
 const PrimitiveKind* primitiveKindNamed(const std::string& name) {
