@@ -2,8 +2,11 @@
 # Runs on the lent GPU machine, in the carried repository (make-bundle.sh made
 # build-gpu/): OpenCL's loader pointed at NVIDIA's library and the machine's PoCL,
 # `prism devices`, then by PHASE (default check,bench):
-#   check    renders of ten scenes on the GPU (PFM, packed as float16 into images.npz)
-#            and every test binary at once, on the GPU (PRISM_TEST_DEVICE)
+#   check    renders of ten scenes on the GPU (PFM, packed as float16 into images.npz),
+#            the same on the machine's CPU device (PoCL) compared byte for byte
+#            ("same bits" or "DIFFER" in the summary: docs/devices.md, "Same bits on
+#            every kind of device"), and every test binary at once, on the GPU
+#            (PRISM_TEST_DEVICE)
 #   bench    prism-bench devices, accel (69k and 1.1M bunny), firsthit
 #   devices  prism-bench devices over the GPU and the CPU at 4, 16 and 32 spp
 # Each step is cut to what is left of DEADLINE seconds. A summary goes to stdout
@@ -66,6 +69,15 @@ if [[ $PHASE == *check* ]]; then
     step render_$sc 120 $B/prism render scenes/$sc.json -o $W/logs/$sc.pfm --device $IDX --stats
     head -1 $W/logs/render_$sc.log >> $S
   done
+  CPU=$(grep -E '^\[[0-9]+\]' $W/logs/devices.log | grep -viE 'nvidia' | head -1 | sed -E 's/^\[([0-9]+)\].*/\1/')
+  if [ -n "$CPU" ]; then
+    mkdir -p $W/cpu
+    for sc in whitted cook cornell dof teapot glossy penumbra geometry quadrics motion; do
+      step cpu_$sc 120 $B/prism render scenes/$sc.json -o $W/cpu/$sc.pfm --device $CPU --quiet
+      if cmp -s $W/logs/$sc.pfm $W/cpu/$sc.pfm; then say "same bits on the GPU and the CPU: $sc"
+      else say "DIFFER on the GPU and the CPU: $sc, $(cmp -l $W/logs/$sc.pfm $W/cpu/$sc.pfm 2>&1 | wc -l) bytes"; fi
+    done
+  fi
   for t in kernel_tests render_tests accel_tests host_tests plugin_tests device_tests; do
     step $t 240 $B/tests/$t -r compact --order decl &
   done
