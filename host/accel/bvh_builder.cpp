@@ -188,7 +188,8 @@ class Bvh2Builder {
     m_scratch.resize(m_refs.size());
     m_next = 1;
     m_pool.run(Subtree{0, 0, n, 0, all},
-               [this](const Subtree& t) { buildNode(t.index, t.begin, t.end, t.depth, t.extent); });
+               [this](const Subtree& t) { buildNode(t.index, t.begin, t.end, t.depth, t.extent); },
+               n >= 2 * kParallelPrims);
     std::vector<Node2> nodes;
     nodes.reserve(m_next.load());
     for (int i = 0; i < m_next.load(); ++i) nodes.push_back(*node(i));

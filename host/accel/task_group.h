@@ -97,17 +97,24 @@ class TaskPool {
   TaskPool& operator=(const TaskPool&) = delete;
 
   // Runs run(first), and run(t) for every t offered meanwhile, on this thread
-  // and the budget's free threads; returns when all are done, rethrowing the
-  // first exception one of them threw.
-  void run(const Task& first, const Runner& run) {
+  // and, when `parallel`, the budget's free threads (a small job is not
+  // worth starting them); returns when all are done, rethrowing the first
+  // exception one of them threw.
+  void run(const Task& first, const Runner& run, bool parallel = true) {
     m_run = &run;
     m_pending = 1;
     std::vector<std::thread> helpers;
-    while (m_budget.tryAcquire())
-      helpers.emplace_back([this] {
-        work();
+    while (parallel && m_budget.tryAcquire()) {
+      try {
+        helpers.emplace_back([this] {
+          work();
+          m_budget.release();
+        });
+      } catch (...) {  // no thread to be had: go on with those there are
         m_budget.release();
-      });
+        break;
+      }
+    }
     execute(first);
     work();
     for (std::thread& t : helpers) t.join();
@@ -115,12 +122,13 @@ class TaskPool {
     if (m_error) std::rethrow_exception(std::exchange(m_error, nullptr));
   }
 
-  // Queues `task` for an idle thread; false when none is idle (then the
-  // caller runs it itself).
+  // Queues `task` for an idle thread; false when no idle thread is left
+  // without a queued task (then the caller runs it itself).
   bool offer(const Task& task) {
     if (m_idle.load(std::memory_order_relaxed) == 0) return false;
     {
       std::lock_guard<std::mutex> lock(m_mutex);
+      if (static_cast<int>(m_tasks.size()) >= m_idle.load()) return false;
       m_tasks.push_back(task);
       ++m_pending;
     }

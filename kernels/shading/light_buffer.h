@@ -32,8 +32,11 @@ inline int light_buffer_cell(float3 w, int res, __global const float4* windows) 
     face = w.z > 0.0f ? 4 : 5, m = a.z, s = w.x, t = w.y;
   }
   float4 win = windows[face];
-  int i = clamp((int)floor((s / m - win.x) * win.y), 0, res - 1);
-  int j = clamp((int)floor((t / m - win.z) * win.w), 0, res - 1);
+  /* Clamped in float before the conversion, which is defined only for values
+   * that fit an int (and NaN, where m is 0, goes to 0). */
+  float top = (float)(res - 1);
+  int i = (int)fmin(fmax(floor((s / m - win.x) * win.y), 0.0f), top);
+  int j = (int)fmin(fmax(floor((t / m - win.z) * win.w), 0.0f), top);
   return (face * res + j) * res + i;
 }
 

@@ -41,9 +41,12 @@ inline float3 texture_image(__global const MaterialGpu* m, __global const float4
 inline float3 texture_color(__global const MaterialGpu* m, __global const float4* texels, float2 uv) {
   if (m->texture == TEXTURE_IMAGE) return texture_image(m, texels, uv / m->texture_scale);
   if (m->texture != TEXTURE_CHECKER) return (float3)(1.0f, 1.0f, 1.0f);
+  /* The parity in float: a cell number beyond the int range (uv near a
+   * plane's horizon) would make the conversion undefined. */
   float2 cell = floor(uv / m->texture_scale);
-  int parity = ((int)cell.x + (int)cell.y) & 1;
-  return parity ? load3g(m->checker2) : load3g(m->checker1);
+  float sum = cell.x + cell.y;
+  bool odd = sum - 2.0f * floor(0.5f * sum) != 0.0f;
+  return odd ? load3g(m->checker2) : load3g(m->checker1);
 }
 
 #endif

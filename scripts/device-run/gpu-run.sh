@@ -74,7 +74,8 @@ if [[ $PHASE == *check* ]]; then
     mkdir -p $W/cpu
     for sc in whitted cook cornell dof teapot glossy penumbra geometry quadrics motion; do
       step cpu_$sc 120 $B/prism render scenes/$sc.json -o $W/cpu/$sc.pfm --device $CPU --quiet
-      if cmp -s $W/logs/$sc.pfm $W/cpu/$sc.pfm; then say "same bits on the GPU and the CPU: $sc"
+      if [ ! -f $W/logs/$sc.pfm ] || [ ! -f $W/cpu/$sc.pfm ]; then say "not compared (a render is missing): $sc"
+      elif cmp -s $W/logs/$sc.pfm $W/cpu/$sc.pfm; then say "same bits on the GPU and the CPU: $sc"
       else say "DIFFER on the GPU and the CPU: $sc, $(cmp -l $W/logs/$sc.pfm $W/cpu/$sc.pfm 2>&1 | wc -l) bytes"; fi
     done
   fi

@@ -268,22 +268,28 @@ TEST_CASE("builds report their statistics", "[accel][builder]") {
 }
 
 TEST_CASE("builds are the same whatever the number of threads", "[accel][builder]") {
-  AccelScene scene = meshScene("torus", bumpyTorus(60000));
-  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
-    AccelBuildOptions one;
-    one.threads = 1;
-    auto a = buildAccel(kind, scene.objects, one);
-    // Two and three threads: the bounds, references and leaf packets are cut
-    // into as many runs.
-    for (int threads : {2, 3}) {
-      AccelBuildOptions more;
-      more.threads = threads;
-      auto b = buildAccel(kind, scene.objects, more);
-      INFO(accelName(kind) << " on " << threads << " threads");
-      REQUIRE(a->nodes.size() == b->nodes.size());
-      REQUIRE(a->packets.size() == b->packets.size());
-      CHECK(std::memcmp(a->nodes.data(), b->nodes.data(), a->nodes.size() * sizeof(AccelWord)) == 0);
-      CHECK(std::memcmp(a->packets.data(), b->packets.data(), a->packets.size() * sizeof(TriPacketGpu)) == 0);
+  // A mesh (every primitive bounded and static) and a mix with planes,
+  // transformed objects and degenerate triangles, large enough for the
+  // primitives' boxes to be cut into runs.
+  for (const AccelScene& scene : {meshScene("torus", bumpyTorus(60000)), mixedScene(20000)}) {
+    for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+      AccelBuildOptions one;
+      one.threads = 1;
+      auto a = buildAccel(kind, scene.objects, one);
+      // Two and three threads: the bounds, references and leaf packets are cut
+      // into as many runs.
+      for (int threads : {2, 3}) {
+        AccelBuildOptions more;
+        more.threads = threads;
+        auto b = buildAccel(kind, scene.objects, more);
+        INFO(scene.name << ", " << accelName(kind) << " on " << threads << " threads");
+        REQUIRE(a->nodes.size() == b->nodes.size());
+        REQUIRE(a->packets.size() == b->packets.size());
+        CHECK(std::memcmp(a->nodes.data(), b->nodes.data(), a->nodes.size() * sizeof(AccelWord)) == 0);
+        CHECK(std::memcmp(a->packets.data(), b->packets.data(), a->packets.size() * sizeof(TriPacketGpu)) == 0);
+        CHECK(a->unbounded == b->unbounded);
+        CHECK(a->kernel_options == b->kernel_options);
+      }
     }
   }
 }
