@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <string>
 
 #include "accel/task_group.h"
@@ -314,7 +315,7 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads
     // Every object bounded and static (a mesh scene without planes): the
     // boxes as they are, joined.
     set.bounded.resize(count);
-    for (std::size_t i = 0; i < count; ++i) set.bounded[i] = static_cast<std::int32_t>(i);
+    std::iota(set.bounded.begin(), set.bounded.end(), 0);
     set.bounds.reserve(count);
     for (const Run& run : run_of) {
       set.bounds.insert(set.bounds.end(), run.boxes.begin(), run.boxes.end());

@@ -55,6 +55,12 @@ bool DeviceDescription::hasExtension(const std::string& name) const {
   return false;
 }
 
+const char* DeviceDescription::sameBitsShortfall() const {
+  if (!correctly_rounded_divide_sqrt) return "does not round division and square root correctly";
+  if (!denormals) return "flushes subnormal floats";
+  return nullptr;
+}
+
 std::vector<DeviceDescription> listDevices() {
   cl_uint platform_count = 0;
   // With no ICD installed the loader reports CL_PLATFORM_NOT_FOUND_KHR: that is

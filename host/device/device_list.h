@@ -29,6 +29,9 @@ struct DeviceDescription {
   bool denormals = false;
 
   bool hasExtension(const std::string& name) const;
+  // What keeps this device from giving the same bits as any other (a phrase
+  // for a warning), or null when nothing does.
+  const char* sameBitsShortfall() const;
 };
 
 // Every device of every platform; empty when no OpenCL runtime is installed.

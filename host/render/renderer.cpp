@@ -118,16 +118,12 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   if (survivor(result.stats) == k) throw DeviceError("no device could take the scene: " + result.stats.devices[0].failure);
   // Devices of different kinds give the same bits only where each rounds
   // division and sqrt correctly and keeps subnormals (kernels/common/same_bits_math.h).
-  if (k > 1)
-    for (size_t i = 0; i < k; ++i) {
-      const DeviceDescription& d = m_contexts[i]->device();
-      if (!result.stats.devices[i].failed && (!d.correctly_rounded_divide_sqrt || !d.denormals))
-        result.stats.warnings.push_back("device '" + d.name + "' " +
-                                        (!d.correctly_rounded_divide_sqrt
-                                             ? "does not round division and square root correctly"
-                                             : "flushes subnormal floats") +
-                                        ": the frame may differ in its last bits from one traced on another device");
-    }
+  for (size_t i = 0; k > 1 && i < k; ++i) {
+    const DeviceDescription& d = m_contexts[i]->device();
+    if (const char* shortfall = d.sameBitsShortfall(); shortfall && !result.stats.devices[i].failed)
+      result.stats.warnings.push_back("device '" + d.name + "' " + shortfall +
+                                      ": the frame may differ in its last bits from one traced on another device");
+  }
 
   result.stats.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (sampling.mode == AaMode::Adaptive)

@@ -65,14 +65,15 @@ IDX=$(grep -E '^\[[0-9]+\]' $W/logs/devices.log | grep -iE 'nvidia' | head -1 | 
 export PRISM_TEST_DEVICE=$IDX
 
 if [[ $PHASE == *check* ]]; then
-  for sc in whitted cook cornell dof teapot glossy penumbra geometry quadrics motion; do
+  SCENES="whitted cook cornell dof teapot glossy penumbra geometry quadrics motion"
+  for sc in $SCENES; do
     step render_$sc 120 $B/prism render scenes/$sc.json -o $W/logs/$sc.pfm --device $IDX --stats
     head -1 $W/logs/render_$sc.log >> $S
   done
   CPU=$(grep -E '^\[[0-9]+\]' $W/logs/devices.log | grep -viE 'nvidia' | head -1 | sed -E 's/^\[([0-9]+)\].*/\1/')
   if [ -n "$CPU" ]; then
     mkdir -p $W/cpu
-    for sc in whitted cook cornell dof teapot glossy penumbra geometry quadrics motion; do
+    for sc in $SCENES; do
       step cpu_$sc 120 $B/prism render scenes/$sc.json -o $W/cpu/$sc.pfm --device $CPU --quiet
       if [ ! -f $W/logs/$sc.pfm ] || [ ! -f $W/cpu/$sc.pfm ]; then say "not compared (a render is missing): $sc"
       elif cmp -s $W/logs/$sc.pfm $W/cpu/$sc.pfm; then say "same bits on the GPU and the CPU: $sc"
