@@ -17,7 +17,7 @@ namespace {
 
 const char* kUsage =
     "usage: prism-bench mpi [--ranks LIST] [--scene FILE] [--size WxH] [--spp N] [--device SEL]\n"
-    "                       [--repeat N] [--out DIR]\n"
+    "                       [--repeat N] [--uneven] [--out DIR]\n"
     "\n"
     "Renders --scene (default scenes/whitted.json) at --size (default 640x480) with\n"
     "--spp jittered samples (default 16) by prism render alone and under mpirun\n"
@@ -28,12 +28,26 @@ const char* kUsage =
     "against one process on each, and whether the images are the same bit for bit.\n"
     "On one machine the ranks share its cores, which one PoCL process already uses\n"
     "in full: there the best is 1.0x, and the figure measures the cost of sharing.\n"
+    "--uneven: the last rank runs on one PoCL thread at the lowest priority (nice\n"
+    "19), a slower node; the ranks deal the frame's units as their devices come\n"
+    "free, and the table after the times shows how many each took and how long\n"
+    "each was busy in the last run (equal busy times: none waited for another).\n"
     "Writes the images to --out (default bench-out).\n";
 
 struct Run {
   std::vector<double> wall, tracing;
   std::string image;
+  std::string shares;  // the last run's device table rows (--stats), one per rank's device
 };
+
+// The rows of --stats' device table: "  [i] part r: name   units samples busy".
+std::string shareRows(const std::string& out) {
+  std::string rows;
+  const std::regex row(R"(  \[[0-9]+\] part [0-9]+: [^\n]*\n)");
+  for (auto it = std::sregex_iterator(out.begin(), out.end(), row); it != std::sregex_iterator(); ++it)
+    rows += it->str();
+  return rows;
+}
 
 // prism's summary line: "... tracing 0.52 s; ...".
 double tracingSeconds(const std::string& out) {
@@ -53,6 +67,7 @@ int mpiMain(const std::vector<std::string>& args) {
   std::string scene = PRISM_SOURCE_DIR "/scenes/whitted.json", device = "0", out_dir = "bench-out";
   std::vector<int> ranks{2, 3};
   int width = 640, height = 480, spp = 16, repeats = 3;
+  bool uneven = false;
   const int status = parseBenchOptions(args, "mpi", kUsage, [&](const std::string& a, const OptionValue& value) {
     if (a == "--ranks") {
       ranks.clear();
@@ -74,6 +89,8 @@ int mpiMain(const std::vector<std::string>& args) {
       device = value();
     } else if (a == "--repeat") {
       repeats = std::max(1, std::stoi(value()));
+    } else if (a == "--uneven") {
+      uneven = true;
     } else if (a == "--out") {
       out_dir = value();
     } else {
@@ -101,8 +118,11 @@ int mpiMain(const std::vector<std::string>& args) {
     std::vector<Run> runs(counts.size());
     auto once = [&](size_t i) {
       runs[i].image = out_dir + "/mpi-" + std::to_string(counts[i]) + ".pfm";
-      const std::string command = (counts[i] == 1 ? std::string() : mpirun + std::to_string(counts[i]) + " ") +
-                                  render + " -o " + shellQuote(runs[i].image);
+      const std::string own = render + " -o " + shellQuote(runs[i].image) + " --stats";
+      std::string command = own;
+      if (counts[i] > 1 && !uneven) command = mpirun + std::to_string(counts[i]) + " " + own;
+      if (counts[i] > 1 && uneven)  // MPMD: the last rank slower
+        command = mpirun + std::to_string(counts[i] - 1) + " " + own + " : -np 1 -x POCL_MAX_PTHREAD_COUNT=1 nice -n 19 " + own;
       int code = 0;
       const auto start = std::chrono::steady_clock::now();
       const std::string out = capture(command, &code);
@@ -110,6 +130,7 @@ int mpiMain(const std::vector<std::string>& args) {
       if (code != 0) throw std::runtime_error("failed (" + command + "):\n" + out);
       runs[i].wall.push_back(wall);
       runs[i].tracing.push_back(tracingSeconds(out));
+      runs[i].shares = shareRows(out);
     };
     for (size_t i = 0; i < counts.size(); ++i) once(i);  // untimed: kernels built, caches warm
     for (Run& r : runs) r.wall.clear(), r.tracing.clear();
@@ -126,6 +147,11 @@ int mpiMain(const std::vector<std::string>& args) {
       std::printf("%-8d %10.3f %11.2fx %12.3f %13.2fx  %s\n", counts[i], wall, median(runs[0].wall) / wall, tracing,
                   median(runs[0].tracing) / tracing,
                   i == 0 ? "reference" : fileBytes(runs[i].image) == reference ? "same bits" : "DIFFERENT");
+    }
+    if (uneven) {
+      std::printf("\nthe last rank on one PoCL thread at nice 19; each rank's share of the last run:\n");
+      std::printf("       device                                      units      samples     busy s\n");
+      for (size_t i = 1; i < counts.size(); ++i) std::printf("%d ranks:\n%s", counts[i], runs[i].shares.c_str());
     }
     std::printf("\nspeed: one process's time over N ranks' (above 1: faster). Reproduce: prism-bench mpi");
     for (size_t i = 1; i < args.size(); ++i) std::printf(" %s", args[i].c_str());

@@ -140,16 +140,31 @@ PRISM_API PrismStatus prismSetProgressCallback(PrismContext context, PrismProgre
  * part whose prismRender fails for any other reason (its device, a cancel)
  * leaves the others waiting at their next exchange: end them, as `prism
  * render` does with MPI_Abort. The parts run one build of prism on machines of
- * one byte order. A NULL `parts` makes the context render alone again. */
+ * one byte order. A NULL `parts` makes the context render alone again.
+ *
+ * Without `compare_swap` each part traces an equal stretch of the units, so the
+ * frame waits for the slowest part. With it, the units are dealt as each
+ * part's devices come free: a part takes from the front of its own stretch,
+ * then from the back of the stretch with the most left (the image is the same
+ * bits either way). `compare_swap` is an atomic compare-and-swap on word `word`
+ * (below `parts`) of `parts` 64-bit words that every part sees and that are
+ * zero when prismSetFrameParts is called (fresh words for each call): it sets
+ * `*found` to the word's value and, if that was `expected`, sets the word to
+ * `desired`. It returns 0, or nonzero when the transport failed. prismRender
+ * may call it from any of its threads, never two calls at once; each part
+ * calls it on its own schedule, so it must not wait for the others (MPI:
+ * MPI_Compare_and_swap on a window, as `prism render` does). */
 typedef void (*PrismReceiveFn)(void* receiver, uint32_t part, const void* data, uint64_t size);
 typedef int (*PrismExchangeFn)(void* user, int to_all, const void* data, uint64_t size, PrismReceiveFn receive,
                                void* receiver);
+typedef int (*PrismCompareSwapFn)(void* user, uint32_t word, uint64_t expected, uint64_t desired, uint64_t* found);
 typedef struct PrismFrameParts {
   size_t struct_size;       /* sizeof(PrismFrameParts) */
   uint32_t part;            /* this process, below parts; 0 gets the image */
   uint32_t parts;           /* processes sharing each frame (1: alone) */
   PrismExchangeFn exchange; /* needed when parts > 1 */
-  void* user;               /* passed to exchange */
+  void* user;               /* passed to exchange and compare_swap */
+  PrismCompareSwapFn compare_swap; /* optional (NULL: equal stretches); all parts give it or none */
 } PrismFrameParts;
 PRISM_API PrismStatus prismSetFrameParts(PrismContext context, const PrismFrameParts* parts);
 

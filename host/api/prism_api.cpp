@@ -2,6 +2,7 @@
 // its body inside guarded() (api_boundary.h).
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <limits>
 
@@ -277,8 +278,10 @@ PRISM_API PrismStatus prismSetFrameParts(PrismContext context, const PrismFrameP
     context->parts = FrameParts{};
     return PRISM_OK;
   }
-  PRISM_REQUIRE(parts->struct_size >= sizeof(PrismFrameParts),
+  // A caller built before compare_swap existed passes a struct without it.
+  PRISM_REQUIRE(parts->struct_size >= offsetof(PrismFrameParts, compare_swap),
                 "prismSetFrameParts: parts->struct_size is too small (set it to sizeof(PrismFrameParts))");
+  const PrismCompareSwapFn compare_swap = parts->struct_size >= sizeof(PrismFrameParts) ? parts->compare_swap : nullptr;
   PRISM_REQUIRE(parts->parts >= 1 && parts->part < parts->parts,
                 "prismSetFrameParts: part " + std::to_string(parts->part) + " is not below parts " +
                     std::to_string(parts->parts) + " (parts counts the processes, at least 1)");
@@ -287,7 +290,12 @@ PRISM_API PrismStatus prismSetFrameParts(PrismContext context, const PrismFrameP
   f.part = parts->part;
   f.parts = parts->parts;
   if (f.shared()) {
-    const PrismFrameParts c = *parts;
+    // Field by field: a struct from before compare_swap is shorter.
+    struct {
+      std::uint32_t parts;
+      PrismExchangeFn exchange;
+      void* user;
+    } const c{parts->parts, parts->exchange, parts->user};
     f.exchange = [c](bool to_all, const Bytes& mine) {
       struct Received {
         std::vector<Bytes> parts;
@@ -310,6 +318,16 @@ PRISM_API PrismStatus prismSetFrameParts(PrismContext context, const PrismFrameP
       if (got.out_of_memory) throw std::bad_alloc();
       return std::move(got.parts);
     };
+    if (compare_swap) {
+      f.compare_swap = [compare_swap, user = c.user](std::uint32_t word, std::uint64_t expected,
+                                                     std::uint64_t desired) {
+        std::uint64_t found = 0;
+        if (const int rc = compare_swap(user, word, expected, desired, &found); rc != 0)
+          throw std::runtime_error("the frame parts' compare-and-swap failed (PrismFrameParts.compare_swap returned " +
+                                   std::to_string(rc) + ")");
+        return found;
+      };
+    }
   }
   context->parts = std::move(f);
   return PRISM_OK;

@@ -43,8 +43,12 @@ MPI_Comm g_comm = MPI_COMM_NULL;  // prism's own, so that its tags meet no one e
 struct PartsComm {
   MPI_Comm comm = MPI_COMM_NULL;
   int rank = 0, size = 1;
+  // PrismFrameParts.compare_swap's words, one a rank, on the communicator's
+  // rank 0 (MPI_WIN_NULL where MPI offers too few threads for the dealing).
+  MPI_Win words = MPI_WIN_NULL;
 };
 PartsComm g_all, g_group;
+bool g_serialized = false;  // MPI_THREAD_SERIALIZED: the devices' threads may call it, one at a time
 
 // MPI counts in int: large exchanges go in pieces.
 constexpr std::uint64_t kPiece = 1u << 30;
@@ -99,6 +103,40 @@ int exchange(void* user, int to_all, const void* data, std::uint64_t size, Prism
   return 0;
 }
 
+// PrismFrameParts.compare_swap: on the words in rank 0's window, which every
+// rank holds open (passive target), so rank 0 never waits on a request: the
+// ranks deal the frame's units among themselves as their devices come free.
+int compareSwap(void* user, std::uint32_t word, std::uint64_t expected, std::uint64_t desired, std::uint64_t* found) {
+  const PartsComm& parts = *static_cast<const PartsComm*>(user);
+  MPI_Compare_and_swap(&desired, &expected, found, MPI_UINT64_T, 0, static_cast<MPI_Aint>(word), parts.words);
+  MPI_Win_flush(0, parts.words);
+  return 0;
+}
+
+// Collective over comm: the words, zero before any rank swaps one.
+void openWords(PartsComm& comm) {
+  if (!g_serialized) return;  // each rank traces its own stretch
+  std::uint64_t* base = nullptr;
+  const MPI_Aint bytes = comm.rank == 0 ? static_cast<MPI_Aint>(comm.size) * 8 : 0;
+  MPI_Win_allocate(bytes, 8, MPI_INFO_NULL, comm.comm, &base, &comm.words);
+  MPI_Win_lock_all(0, comm.words);
+  if (comm.rank == 0) {
+    const std::uint64_t zero = 0;
+    std::uint64_t was = 0;
+    for (int w = 0; w < comm.size; ++w)
+      MPI_Fetch_and_op(&zero, &was, MPI_UINT64_T, 0, w, MPI_REPLACE, comm.words);
+    MPI_Win_flush(0, comm.words);
+  }
+  MPI_Barrier(comm.comm);
+}
+
+// Collective over comm, where every rank of it ends normally.
+void closeWords(PartsComm& comm) {
+  if (comm.words == MPI_WIN_NULL) return;
+  MPI_Win_unlock_all(comm.words);
+  MPI_Win_free(&comm.words);
+}
+
 PrismFrameParts partsOver(PartsComm& comm) {
   PrismFrameParts parts{};
   parts.struct_size = sizeof parts;
@@ -107,6 +145,8 @@ PrismFrameParts partsOver(PartsComm& comm) {
   if (comm.size > 1) {
     parts.exchange = exchange;
     parts.user = &comm;
+    openWords(comm);
+    if (comm.words != MPI_WIN_NULL) parts.compare_swap = compareSwap;
   }
   return parts;
 }
@@ -117,9 +157,12 @@ PrismFrameParts partsOver(PartsComm& comm) {
 #ifdef PRISM_WITH_MPI
 Ranks startRanks() {
   if (g_started || launchedRanks() == 0) return g_ranks;
-  // Only this thread calls MPI; the devices' threads and PoCL's do not.
+  // This thread calls MPI, and so do the devices' threads when they take units
+  // (compareSwap), one at a time; PoCL's threads do not. Where MPI offers
+  // only this thread, each rank traces a fixed stretch of the frame.
   int provided = MPI_THREAD_SINGLE;
-  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
+  g_serialized = provided >= MPI_THREAD_SERIALIZED;
   g_started = true;
   if (provided < MPI_THREAD_FUNNELED) {
     MPI_Finalize();
@@ -172,6 +215,8 @@ int endRanks(int code) {
     int worst = 0;
     MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, g_comm);
   }
+  closeWords(g_all);
+  closeWords(g_group);
   if (g_group.comm != MPI_COMM_NULL) MPI_Comm_free(&g_group.comm);
   MPI_Comm_free(&g_comm);
   MPI_Finalize();

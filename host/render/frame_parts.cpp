@@ -82,6 +82,54 @@ std::string ByteReader::getString() {
   return s;
 }
 
+void packUnitRuns(ByteWriter& out, const std::vector<std::size_t>& owner, std::size_t no_owner) {
+  std::vector<std::uint64_t> runs;  // first, last, first, last, ...
+  for (std::size_t u = 0; u < owner.size(); ++u) {
+    if (owner[u] == no_owner) continue;
+    if (!runs.empty() && runs.back() == u)
+      runs.back() = u + 1;
+    else
+      runs.insert(runs.end(), {u, u + 1});
+  }
+  out.put<std::uint64_t>(runs.size() / 2);
+  out.putArray(runs.data(), runs.size());
+}
+
+void unpackUnitRuns(ByteReader& in, std::uint32_t part, std::vector<std::uint32_t>& part_of) {
+  const auto runs = in.get<std::uint64_t>();
+  std::uint64_t after = 0;  // the runs come in order, apart
+  for (std::uint64_t r = 0; r < runs; ++r) {
+    const auto first = in.get<std::uint64_t>(), last = in.get<std::uint64_t>();
+    if (first < after || last <= first || last > part_of.size())
+      throw std::runtime_error("frame parts: part " + std::to_string(part) + " sent a list of units out of order");
+    for (std::uint64_t u = first; u < last; ++u) {
+      if (part_of[u] != kNoPart)
+        throw std::runtime_error("frame parts: parts " + std::to_string(part_of[u]) + " and " + std::to_string(part) +
+                                 " both traced unit " + std::to_string(u));
+      part_of[u] = part;
+    }
+    after = last;
+  }
+}
+
+void checkUnitsCovered(const std::vector<std::uint32_t>& part_of) {
+  for (std::size_t u = 0; u < part_of.size(); ++u)
+    if (part_of[u] == kNoPart) throw std::runtime_error("frame parts: no part traced unit " + std::to_string(u));
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> unitRuns(const std::vector<std::uint32_t>& part_of,
+                                                          std::uint32_t part) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for (std::size_t u = 0; u < part_of.size(); ++u) {
+    if (part_of[u] != part) continue;
+    if (!runs.empty() && runs.back().second == u)
+      ++runs.back().second;
+    else
+      runs.emplace_back(u, u + 1);
+  }
+  return runs;
+}
+
 void packUnitCounts(ByteWriter& out, const RenderStats* counts, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) {
     const RenderStats& c = counts[i];

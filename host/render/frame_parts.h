@@ -27,12 +27,19 @@ struct FrameParts {
   // to_all: every part receives every part's bytes, indexed by part; otherwise
   // part 0 does and the others receive nothing. Throws when the transport fails.
   std::function<std::vector<Bytes>(bool to_all, const Bytes& mine)> exchange;
+  // Optional: an atomic compare-and-swap on one of `parts` 64-bit words that
+  // every part sees, zero when the parts are set (render/shared_stretches.h).
+  // With it, the units are dealt as each part's devices come free; without it,
+  // each part traces its own stretch (partUnits). Called from any of the
+  // render's threads, one call at a time. Throws when the transport fails.
+  std::function<std::uint64_t(std::uint32_t word, std::uint64_t expected, std::uint64_t desired)> compare_swap;
 
   bool shared() const { return parts > 1; }
 };
 
-// The units [first, last) that part `part` of `parts` traces: contiguous
-// stretches of the unit sequence, in part order, as equal as they can be.
+// The units [first, last) that part `part` of `parts` starts from (and, without
+// FrameParts::compare_swap, traces): contiguous stretches of the unit
+// sequence, in part order, as equal as they can be.
 std::pair<std::size_t, std::size_t> partUnits(std::size_t units, std::uint32_t part, std::uint32_t parts);
 
 // Packing for the exchanges. The parts run on machines of one byte order and
@@ -79,6 +86,19 @@ class ByteReader {
 // of objects, materials and lights, hashed (FNV-1a, 64 bits).
 std::uint64_t frameFingerprint(const GpuScene& scene, const RenderOptions& options, FirstHitMode first_hit,
                                ShadowMode shadows, AccelKind accel);
+
+// Which part traced each unit, from each part's own list: every part sends
+// the runs of units it traced (packUnitRuns) and reads everyone's
+// (unpackUnitRuns into `part_of`, kNoPart where no one has yet). Throws
+// std::runtime_error when two parts claim a unit, or, once every part is read
+// (checkUnitsCovered), one that no part traced.
+constexpr std::uint32_t kNoPart = ~std::uint32_t{0};
+void packUnitRuns(ByteWriter& out, const std::vector<std::size_t>& owner, std::size_t no_owner);
+void unpackUnitRuns(ByteReader& in, std::uint32_t part, std::vector<std::uint32_t>& part_of);
+void checkUnitsCovered(const std::vector<std::uint32_t>& part_of);
+// The runs [first, last) of consecutive units that part `part` traced, in order.
+std::vector<std::pair<std::size_t, std::size_t>> unitRuns(const std::vector<std::uint32_t>& part_of,
+                                                          std::uint32_t part);
 
 // The counts of a run of units (rays, waves, film trips, the NaN finding).
 void packUnitCounts(ByteWriter& out, const RenderStats* counts, std::size_t n);

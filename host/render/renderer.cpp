@@ -9,6 +9,7 @@
 #include "device/cl_error.h"
 #include "render/light_buffer.h"
 #include "render/part_resolve.h"
+#include "render/shared_stretches.h"
 #include "render/work_dealer.h"
 
 namespace prism {
@@ -235,6 +236,7 @@ void Renderer::setFrameParts(FrameParts parts) {
     throw std::invalid_argument("Renderer::setFrameParts: part must be below parts");
   if (parts.shared() && !parts.exchange) throw std::invalid_argument("Renderer::setFrameParts: no exchange");
   m_parts = std::move(parts);
+  m_deal_round = 0;  // the words are fresh
 }
 
 void Renderer::setFilmBatchSlices(size_t slices) {
@@ -252,18 +254,22 @@ size_t Renderer::survivor(const RenderStats& stats) const {
   return stats.devices.size();
 }
 
-std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_samples,
-                                   const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
-                                   const ProgressFn& progress) {
-  // Not a structured binding: the lambda below captures it (C++17).
-  const std::pair<size_t, size_t> mine_range = partUnits(unit_samples.size(), m_parts.part, m_parts.parts);
-  const size_t mine_first = mine_range.first, mine_last = mine_range.second;
-  const std::vector<std::uint64_t> mine(unit_samples.begin() + static_cast<std::ptrdiff_t>(mine_first),
-                                        unit_samples.begin() + static_cast<std::ptrdiff_t>(mine_last));
+Renderer::DealtUnits Renderer::deal(const std::vector<std::uint64_t>& unit_samples,
+                                    const std::function<void(DeviceTracer&, size_t unit)>& unit,
+                                    RenderResult& result, const ProgressFn& progress) {
+  const size_t units = unit_samples.size();
+  std::unique_ptr<UnitSource> source;
+  if (m_parts.shared() && m_parts.compare_swap) {
+    source = std::make_unique<SharedStretches>(unit_samples, m_parts.part, m_parts.parts, ++m_deal_round,
+                                               m_parts.compare_swap);
+  } else {
+    const auto [first, last] = partUnits(units, m_parts.part, m_parts.parts);
+    source = std::make_unique<UnitRange>(unit_samples, first, last);
+  }
   std::vector<std::uint64_t> started(m_tracers.size(), 0);
   // Counts are kept per unit, so that a unit traced again after its device
   // failed counts once, whoever traced it.
-  std::vector<RenderStats> counts(unit_samples.size());
+  std::vector<RenderStats> counts(units);
   const UnitFn traced = [&](size_t d, size_t u) {
     for (const auto& [device, at] : m_faults)
       if (d == device && started[d] == at)
@@ -271,24 +277,36 @@ std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_sample
     ++started[d];
     RenderStats& tracer_counts = m_device_stats[d];  // where the tracer counts (DeviceTracer::load)
     tracer_counts = RenderStats{};
-    unit(*m_tracers[d], mine_first + u);
-    counts[mine_first + u] = std::move(tracer_counts);
+    unit(*m_tracers[d], u);
+    counts[u] = std::move(tracer_counts);
   };
   // With one device alone, progress comes chunk by chunk from the unit itself.
   std::function<bool(size_t, size_t)> step;
   if (unitsOfSlices() && progress)
-    step = [&](size_t done, size_t units) { return progress(static_cast<double>(done) / static_cast<double>(units)); };
-  DealResult dealt = dealUnits(result.stats.devices, mine, traced, step, m_paces);
+    step = [&](size_t done, size_t whole) { return progress(static_cast<double>(done) / static_cast<double>(whole)); };
+  DealResult dealt = dealUnits(result.stats.devices, unit_samples, *source, traced, step, m_paces);
   for (std::string& w : dealt.warnings) result.stats.warnings.push_back(std::move(w));
   if (dealt.cancelled) throw RenderCancelled();
+  DealtUnits out{std::move(dealt.owner), std::vector<std::uint32_t>(units, m_parts.shared() ? kNoPart : 0)};
   if (m_parts.shared()) {
-    ByteWriter out;
-    if (m_parts.part != 0) packUnitCounts(out, counts.data() + mine_first, mine_last - mine_first);
-    const std::vector<Bytes> got = m_parts.exchange(false, out.take());
+    // Every part learns who traced what; part 0 gets the counts of every unit.
+    ByteWriter runs;
+    packUnitRuns(runs, out.owner, kNoDevice);
+    const std::vector<Bytes> lists = m_parts.exchange(true, runs.take());
+    for (std::uint32_t p = 0; p < m_parts.parts; ++p) {
+      ByteReader in(lists.at(p));
+      unpackUnitRuns(in, p, out.part_of);
+      in.expectDone();
+    }
+    checkUnitsCovered(out.part_of);
+    ByteWriter mine;
+    if (m_parts.part != 0)
+      for (const auto& [first, last] : unitRuns(out.part_of, m_parts.part))
+        packUnitCounts(mine, counts.data() + first, last - first);
+    const std::vector<Bytes> got = m_parts.exchange(false, mine.take());
     for (std::uint32_t p = 1; m_parts.part == 0 && p < m_parts.parts; ++p) {
-      const auto [first, last] = partUnits(unit_samples.size(), p, m_parts.parts);
       ByteReader in(got.at(p));
-      unpackUnitCounts(in, counts.data() + first, last - first);
+      for (const auto& [first, last] : unitRuns(out.part_of, p)) unpackUnitCounts(in, counts.data() + first, last - first);
       in.expectDone();
     }
   }
@@ -302,9 +320,7 @@ std::vector<size_t> Renderer::deal(const std::vector<std::uint64_t>& unit_sample
     stats.film_batches += c.film_batches;
     if (c.nan && !stats.nan) stats.nan = c.nan;
   }
-  std::vector<size_t> owner(unit_samples.size(), kElsewhere);
-  std::copy(dealt.owner.begin(), dealt.owner.end(), owner.begin() + static_cast<std::ptrdiff_t>(mine_first));
-  return owner;
+  return out;
 }
 
 void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOptions& opt, RenderResult& result,
@@ -318,7 +334,7 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
       result.stats.first_hit == FirstHitMode::ZBuffer ? DeviceTracer::kZBufferBatch : DeviceTracer::kSliceRays;
   std::vector<std::uint64_t> unit_samples;
   for (std::uint64_t first = 0; first < total; first += unit_size) unit_samples.push_back(std::min(unit_size, total - first));
-  const std::vector<size_t> owner = deal(
+  const DealtUnits dealt = deal(
       unit_samples,
       [&](DeviceTracer& tracer, size_t u) {
         const std::uint64_t first = u * unit_size;
@@ -332,79 +348,91 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
   // (the survivor).
   DeviceTracer& resolving = *m_tracers[survivor(result.stats)];
   SampleRun run;
+  const std::vector<size_t>& owner = dealt.owner;
   for (size_t u = 0; u < owner.size(); ++u) {
-    if (owner[u] == kElsewhere || m_tracers[owner[u]].get() == &resolving) continue;
+    if (owner[u] == kNoDevice || m_tracers[owner[u]].get() == &resolving) continue;
     run.resize(static_cast<size_t>(unit_samples[u]));
     m_tracers[owner[u]]->readSamples(u * unit_size, run.size(), run.rgba.data(), run.xy.data());
     resolving.writeSamples(u * unit_size, run.size(), run.rgba.data(), run.xy.data());
   }
   if (m_parts.shared())
-    resolveAcrossParts(sampling, opt, unit_samples, unit_size, resolving, result);
+    resolveAcrossParts(sampling, opt, dealt.part_of, unit_size, resolving, result);
   else
     result.rgba = resolving.resolvePixels();
 }
 
 void Renderer::resolveAcrossParts(const SamplingOptions& sampling, const RenderOptions& opt,
-                                  const std::vector<std::uint64_t>& unit_samples, std::uint64_t unit_size,
+                                  const std::vector<std::uint32_t>& part_of, std::uint64_t unit_size,
                                   DeviceTracer& resolving, RenderResult& result) {
-  // Part 0 resolves the frame; each other part sends it the pixels it can
-  // resolve alone and the samples part 0 needs for the rest
-  // (render/part_resolve.h), or, in quincunx mode, whose corner samples are
-  // shared by neighbouring pixels, all its samples.
+  // Part 0 resolves the frame; each other part sends it, for each run of
+  // consecutive units it traced, the pixels it can resolve alone and the
+  // samples part 0 needs for the rest (render/part_resolve.h), or, in quincunx
+  // mode, whose corner samples are shared by neighbouring pixels, all its samples.
   const std::uint64_t total = sampleCount(sampling.mode, opt.width, opt.height, sampling.spp);
   const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * static_cast<std::uint64_t>(opt.height);
   // As the resolve kernel reaches: ceil(r - 1/2) rows and columns, in float.
   const auto reach_rows =
       static_cast<std::uint64_t>(std::ceil(static_cast<float>(filterRadius(sampling.effectiveFilter())) - 0.5f));
   const auto partOf = [&](std::uint32_t p) {
-    const auto [first_unit, last_unit] = partUnits(unit_samples.size(), p, m_parts.parts);
-    const std::uint64_t first = std::min<std::uint64_t>(total, first_unit * unit_size);
-    const std::uint64_t end = std::min<std::uint64_t>(total, last_unit * unit_size);
-    if (sampling.mode == AaMode::Quincunx) {
-      PartResolve all;
-      if (end > first) all.samples.emplace_back(first, end);
-      return all;
+    std::vector<PartResolve> runs;
+    for (const auto& [first_unit, last_unit] : unitRuns(part_of, p)) {
+      const std::uint64_t first = std::min<std::uint64_t>(total, first_unit * unit_size);
+      const std::uint64_t end = std::min<std::uint64_t>(total, last_unit * unit_size);
+      if (sampling.mode == AaMode::Quincunx) {
+        PartResolve all;
+        if (end > first) all.samples.emplace_back(first, end);
+        runs.push_back(all);
+      } else {
+        runs.push_back(partResolve(first, end, static_cast<std::uint64_t>(sampling.spp),
+                                   reach_rows * (static_cast<std::uint64_t>(opt.width) + 1)));
+      }
     }
-    return partResolve(first, end, static_cast<std::uint64_t>(sampling.spp),
-                       reach_rows * (static_cast<std::uint64_t>(opt.width) + 1));
+    return runs;
   };
   SampleRun run;
   ByteWriter out;
   if (m_parts.part != 0) {
-    const PartResolve mine = partOf(m_parts.part);
-    const std::vector<float> own =
-        resolving.resolvePixels(static_cast<size_t>(mine.first_pixel), static_cast<size_t>(mine.end_pixel - mine.first_pixel));
-    out.putArray(own.data(), own.size());
-    for (const auto& [first, end] : mine.samples) {
-      run.resize(static_cast<size_t>(end - first));
-      resolving.readSamples(first, run.size(), run.rgba.data(), run.xy.data());
-      out.putArray(run.rgba.data(), run.rgba.size());
-      out.putArray(run.xy.data(), run.xy.size());
+    for (const PartResolve& mine : partOf(m_parts.part)) {
+      if (mine.end_pixel > mine.first_pixel) {
+        const std::vector<float> own = resolving.resolvePixels(static_cast<size_t>(mine.first_pixel),
+                                                               static_cast<size_t>(mine.end_pixel - mine.first_pixel));
+        out.putArray(own.data(), own.size());
+      }
+      for (const auto& [first, end] : mine.samples) {
+        run.resize(static_cast<size_t>(end - first));
+        resolving.readSamples(first, run.size(), run.rgba.data(), run.xy.data());
+        out.putArray(run.rgba.data(), run.rgba.size());
+        out.putArray(run.xy.data(), run.xy.size());
+      }
     }
   }
   const std::vector<Bytes> got = m_parts.exchange(false, out.take());
   if (m_parts.part != 0) return;  // render() gives the other parts zeros
   result.rgba.assign(4 * pixels, 0.f);
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> resolved;  // by the other parts, in order
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> resolved;  // by the other parts
   for (std::uint32_t p = 1; p < m_parts.parts; ++p) {
-    const PartResolve theirs = partOf(p);
     ByteReader in(got.at(p));
-    in.getArray(result.rgba.data() + 4 * theirs.first_pixel, 4 * (theirs.end_pixel - theirs.first_pixel));
-    if (theirs.end_pixel > theirs.first_pixel) resolved.emplace_back(theirs.first_pixel, theirs.end_pixel);
-    for (const auto& [first, end] : theirs.samples) {
-      run.resize(static_cast<size_t>(end - first));
-      in.getArray(run.rgba.data(), run.rgba.size());
-      in.getArray(run.xy.data(), run.xy.size());
-      resolving.writeSamples(first, run.size(), run.rgba.data(), run.xy.data());
+    for (const PartResolve& theirs : partOf(p)) {
+      in.getArray(result.rgba.data() + 4 * theirs.first_pixel, 4 * (theirs.end_pixel - theirs.first_pixel));
+      if (theirs.end_pixel > theirs.first_pixel) resolved.emplace_back(theirs.first_pixel, theirs.end_pixel);
+      for (const auto& [first, end] : theirs.samples) {
+        run.resize(static_cast<size_t>(end - first));
+        in.getArray(run.rgba.data(), run.rgba.size());
+        in.getArray(run.xy.data(), run.xy.size());
+        resolving.writeSamples(first, run.size(), run.rgba.data(), run.xy.data());
+      }
     }
     in.expectDone();
   }
   // Part 0 resolves the pixels between those.
+  std::sort(resolved.begin(), resolved.end());
   std::uint64_t from = 0;
   resolved.emplace_back(pixels, pixels);
   for (const auto& [first, end] : resolved) {
-    const std::vector<float> own = resolving.resolvePixels(static_cast<size_t>(from), static_cast<size_t>(first - from));
-    std::copy(own.begin(), own.end(), result.rgba.begin() + static_cast<std::ptrdiff_t>(4 * from));
+    if (first > from) {
+      const std::vector<float> own = resolving.resolvePixels(static_cast<size_t>(from), static_cast<size_t>(first - from));
+      std::copy(own.begin(), own.end(), result.rgba.begin() + static_cast<std::ptrdiff_t>(4 * from));
+    }
     from = end;
   }
 }
@@ -437,7 +465,7 @@ void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptio
     std::vector<std::uint64_t> unit_samples;
     for (size_t first = 0; first < n; first += unit_size) unit_samples.push_back(std::min(unit_size, n - first));
     std::vector<float> rgba(4 * n);
-    deal(
+    const DealtUnits dealt = deal(
         unit_samples,
         [&](DeviceTracer& tracer, size_t u) {
           const size_t first = u * unit_size, m = static_cast<size_t>(unit_samples[u]);
@@ -453,20 +481,19 @@ void Renderer::renderAdaptive(const SamplingOptions& sampling, const RenderOptio
         several && progress ? ProgressFn([&](double f) { return progress(std::min(1.0, (pass + f) / passes)); })
                             : ProgressFn());
     if (m_parts.shared()) {
-      // Every part chooses the next pass's points from every colour of this one.
-      const auto positions = [&](std::uint32_t p) {
-        const auto [first, last] = partUnits(unit_samples.size(), p, m_parts.parts);
-        return std::make_pair(std::min(n, first * unit_size), std::min(n, last * unit_size));
+      // Every part chooses the next pass's points from every colour of this
+      // one: each sends those of the positions of its runs of units.
+      const auto each_run = [&](std::uint32_t p, auto&& positions) {
+        for (const auto& [first, last] : unitRuns(dealt.part_of, p))
+          positions(std::min(n, first * unit_size), std::min(n, last * unit_size));
       };
-      const auto [lo, hi] = positions(m_parts.part);
       ByteWriter out;
-      out.putArray(rgba.data() + 4 * lo, 4 * (hi - lo));
+      each_run(m_parts.part, [&](size_t lo, size_t hi) { out.putArray(rgba.data() + 4 * lo, 4 * (hi - lo)); });
       const std::vector<Bytes> got = m_parts.exchange(true, out.take());
       for (std::uint32_t p = 0; p < m_parts.parts; ++p) {
         if (p == m_parts.part) continue;
-        const auto [plo, phi] = positions(p);
         ByteReader in(got.at(p));
-        in.getArray(rgba.data() + 4 * plo, 4 * (phi - plo));
+        each_run(p, [&](size_t lo, size_t hi) { in.getArray(rgba.data() + 4 * lo, 4 * (hi - lo)); });
         in.expectDone();
       }
     }

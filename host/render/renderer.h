@@ -97,19 +97,23 @@ class Renderer {
   // traceFilmPositions.
   void renderAdaptive(const SamplingOptions& sampling, const RenderOptions& options, RenderResult& result,
                       const ProgressFn& progress);
-  // Runs unit(tracer, u) over the devices for every unit of this process's part
-  // of the frame; fills result.stats.devices and its warnings, adds the units'
-  // counts to result.stats (at part 0, every part's); returns which tracer did
-  // each unit (kElsewhere: another part).
-  std::vector<size_t> deal(const std::vector<std::uint64_t>& unit_samples,
-                           const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
-                           const ProgressFn& progress);
+  // Who traced each unit of a frame.
+  struct DealtUnits {
+    std::vector<size_t> owner;           // this process's device, or kNoDevice (another part)
+    std::vector<std::uint32_t> part_of;  // the part (0 when the frame is not shared)
+  };
+  // Runs unit(tracer, u) over the devices for the units this process takes
+  // (its stretch, or as its devices come free with FrameParts::compare_swap);
+  // fills result.stats.devices and its warnings, adds the units' counts to
+  // result.stats (at part 0, every part's).
+  DealtUnits deal(const std::vector<std::uint64_t>& unit_samples,
+                  const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
+                  const ProgressFn& progress);
   // With frame parts: part 0 gathers what it needs from the others and resolves
   // the frame (render/part_resolve.h).
   void resolveAcrossParts(const SamplingOptions& sampling, const RenderOptions& opt,
-                          const std::vector<std::uint64_t>& unit_samples, std::uint64_t unit_size,
+                          const std::vector<std::uint32_t>& part_of, std::uint64_t unit_size,
                           DeviceTracer& resolving, RenderResult& result);
-  static constexpr size_t kElsewhere = ~size_t{0};
   // Units of slices (with several devices, or parts) rather than one unit a pass.
   bool unitsOfSlices() const { return m_tracers.size() > 1 || m_parts.shared(); }
   // Throws on every part unless every part renders the same frame.
@@ -126,6 +130,7 @@ class Renderer {
   AccelBuildOptions m_accel_build;
   std::vector<std::pair<size_t, std::uint64_t>> m_faults;  // (device, unit)
   FrameParts m_parts;
+  std::uint16_t m_deal_round = 0;  // deals since the parts were set (render/shared_stretches.h)
 };
 
 }  // namespace prism

@@ -1,5 +1,6 @@
 #include "render/work_dealer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -46,12 +47,34 @@ bool worthTaking(std::size_t d, double samples, double pending, const std::vecto
   return samples / own < std::max((pending + held) / pooled, soonest);
 }
 
+UnitRange::UnitRange(const std::vector<std::uint64_t>& unit_samples, std::size_t first, std::size_t last)
+    : m_samples(unit_samples), m_first(first), m_next(first), m_last(last) {
+  if (first > last || last > unit_samples.size()) throw std::invalid_argument("UnitRange: not a range of the units");
+  for (std::size_t u = first; u < last; ++u) m_left += static_cast<double>(unit_samples[u]);
+}
+
+std::optional<std::size_t> UnitRange::take() {
+  if (m_next == m_last) return std::nullopt;
+  m_left -= static_cast<double>(m_samples[m_next]);
+  return m_next++;
+}
+
+double UnitRange::nextSamples() const { return m_next == m_last ? 0.0 : static_cast<double>(m_samples[m_next]); }
+
 DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
                      const UnitFn& unit, const std::function<bool(std::size_t done, std::size_t units)>& progress,
                      std::vector<double>& paces) {
+  UnitRange all(unit_samples, 0, unit_samples.size());
+  return dealUnits(devices, unit_samples, all, unit, progress, paces);
+}
+
+DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
+                     UnitSource& source, const UnitFn& unit,
+                     const std::function<bool(std::size_t done, std::size_t units)>& progress,
+                     std::vector<double>& paces) {
   const std::size_t units = unit_samples.size();
   DealResult result;
-  result.owner.assign(units, 0);
+  result.owner.assign(units, kNoDevice);
   if (devices.empty()) throw std::logic_error("dealUnits: no device");
   paces.resize(devices.size(), 0.0);
   struct KeepPaces {  // on every way out, cancelled or failed too
@@ -62,17 +85,21 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
         if (!devices[d].failed) paces[d] = paceOf(devices[d], paces[d]);
     }
   } keep{devices, paces};
+  const auto expected = [&](std::size_t done) { return std::max(done, source.expectedUnits()); };
 
   if (devices.size() == 1) {
     DeviceShare& share = devices.front();
     if (share.failed) throw std::logic_error("dealUnits: the only device has failed");
-    for (std::size_t u = 0; u < units; ++u) {
+    std::size_t done = 0;
+    while (const std::optional<std::size_t> u = source.take()) {
       const auto start = std::chrono::steady_clock::now();
-      unit(0, u);
+      unit(0, *u);
       share.busy_seconds += secondsSince(start);
       ++share.units;
-      share.samples += unit_samples[u];
-      if (progress && !progress(u + 1, units)) {
+      share.samples += unit_samples[*u];
+      result.owner[*u] = 0;
+      ++done;
+      if (progress && !progress(done, expected(done))) {
         result.cancelled = true;
         break;
       }
@@ -80,17 +107,14 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
     return result;
   }
 
-  // Shared state: the units not yet taken (in order), how many are finished,
-  // and the first exception that is not a device failure.
+  // Shared state: the units given back by failed devices (dealt before the
+  // source's), how many units are taken and finished, and the first exception
+  // that is not a device failure.
   std::mutex mutex;
   std::condition_variable changed;
-  std::deque<std::size_t> pending;
-  double pending_samples = 0;
-  for (std::size_t u = 0; u < units; ++u) {
-    pending.push_back(u);
-    pending_samples += static_cast<double>(unit_samples[u]);
-  }
-  std::size_t finished = 0, working = devices.size(), busy = 0;
+  std::deque<std::size_t> returned;
+  double returned_samples = 0;
+  std::size_t taken = 0, finished = 0, working = devices.size(), busy = 0;
   bool stop = false;
   std::exception_ptr fatal, last_failure;
   std::vector<std::vector<std::size_t>> done_by(devices.size());
@@ -101,6 +125,7 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
   std::vector<double> holding(devices.size(), 0.0);
   std::vector<char> waiting(devices.size(), 0), took(devices.size(), 0);
   std::vector<DevicePace> pace(devices.size());
+  auto nothing_left = [&] { return returned.empty() && source.exhausted(); };  // under the lock
   auto worth = [&](std::size_t d) {  // under the lock
     if (!took[d]) return true;  // its first unit of the frame: its pace, measured afresh
     for (std::size_t e = 0; e < devices.size(); ++e) {
@@ -112,7 +137,8 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
                            ? std::max(0.0, holding[e] - p.samples_per_second * secondsSince(since[e]))
                            : 0.0;
     }
-    return worthTaking(d, static_cast<double>(unit_samples[pending.front()]), pending_samples, pace);
+    const double next = returned.empty() ? source.nextSamples() : static_cast<double>(unit_samples[returned.front()]);
+    return worthTaking(d, next, returned_samples + source.samplesLeft(), pace);
   };
   auto release = [&](std::size_t d) {  // under the lock: device d holds no unit any more
     --busy;
@@ -131,13 +157,28 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
         // may be after the others' next step, or their failure.
         waiting[d] = 1;
         changed.notify_all();  // the others judge again with this device idle
-        changed.wait(lock, [&] { return stop || (pending.empty() ? busy == 0 : worth(d)); });
-        if (stop || pending.empty()) break;  // still waiting: idle from now on
+        changed.wait(lock, [&] { return stop || (nothing_left() ? busy == 0 : worth(d)); });
+        if (stop || nothing_left()) break;  // still waiting: idle from now on
+        std::optional<std::size_t> next;
+        if (!returned.empty()) {
+          next = returned.front();
+          returned.pop_front();
+          returned_samples -= static_cast<double>(unit_samples[*next]);
+        } else {
+          try {
+            next = source.take();  // the source's transport may fail
+          } catch (...) {
+            if (!fatal) fatal = std::current_exception();
+            stop = true;
+            changed.notify_all();
+            break;
+          }
+          if (!next) continue;  // the source ran dry: judge again
+          ++taken;
+        }
         waiting[d] = 0;
         took[d] = 1;
-        u = pending.front();
-        pending.pop_front();
-        pending_samples -= static_cast<double>(unit_samples[u]);
+        u = *next;
         holding[d] = static_cast<double>(unit_samples[u]);
         since[d] = std::chrono::steady_clock::now();
         ++busy;
@@ -151,11 +192,12 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
         share.failure = e.what();
         // Its unit and every unit it finished go to the others: a failed
         // device's memory is not read again.
-        pending.push_front(u);
-        pending_samples += static_cast<double>(unit_samples[u]);
+        returned.push_front(u);
+        returned_samples += static_cast<double>(unit_samples[u]);
         for (std::size_t v : done_by[d]) {
-          pending.push_front(v);
-          pending_samples += static_cast<double>(unit_samples[v]);
+          returned.push_front(v);
+          returned_samples += static_cast<double>(unit_samples[v]);
+          result.owner[v] = kNoDevice;
         }
         finished -= done_by[d].size();
         done_by[d].clear();
@@ -197,9 +239,9 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
       if (finished > reported && !stop) {
         reported = finished;
         if (progress) {
-          const std::size_t done = finished;
+          const std::size_t done = finished, whole = expected(done);
           lock.unlock();
-          const bool go_on = progress(done, units);
+          const bool go_on = progress(done, whole);
           lock.lock();
           if (!go_on) {
             stop = true;
@@ -213,7 +255,7 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
   for (std::thread& t : threads) t.join();
   if (fatal) std::rethrow_exception(fatal);
   if (result.cancelled) return result;
-  if (finished < units) {  // every device failed
+  if (finished < taken || !source.exhausted()) {  // every device has failed
     if (last_failure) std::rethrow_exception(last_failure);
     throw DeviceError("every device has failed");
   }

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,11 @@ struct DeviceShare {
   std::string failure;          // why
 };
 
+// Not traced by this process (DealResult::owner).
+constexpr std::size_t kNoDevice = ~std::size_t{0};
+
 struct DealResult {
-  std::vector<std::size_t> owner;     // per unit: the device that finished it
+  std::vector<std::size_t> owner;     // per unit: the device that finished it, or kNoDevice
   std::vector<std::string> warnings;  // one per retired device
   bool cancelled = false;
 };
@@ -49,6 +53,43 @@ struct DevicePace {
 // could finish this unit, since a unit is not split.
 bool worthTaking(std::size_t d, double samples, double pending, const std::vector<DevicePace>& paces);
 
+// Where dealUnits takes the units this process traces: a stretch of its own
+// (UnitRange), or the stretches of several processes dealt as each asks
+// (render/shared_stretches.h). dealUnits calls it under its lock, one call at a
+// time, from whichever of its threads wants a unit.
+class UnitSource {
+ public:
+  virtual ~UnitSource() = default;
+  // The next unit (an index into the frame's units), or none: none is left,
+  // and exhausted() says so from then on. May throw (a transport's failure).
+  virtual std::optional<std::size_t> take() = 0;
+  // Whether take would give none: known once it has (or when there never was one).
+  virtual bool exhausted() const = 0;
+  // At most the samples of the next unit take gives (worthTaking's `samples`).
+  virtual double nextSamples() const = 0;
+  // The samples left to take, as far as this process knows (worthTaking's `pending`).
+  virtual double samplesLeft() const = 0;
+  // The units this process may yet finish in all, those taken included
+  // (progress's whole; it grows when it takes another's units).
+  virtual std::size_t expectedUnits() const = 0;
+};
+
+// Units [first, last), in order.
+class UnitRange : public UnitSource {
+ public:
+  UnitRange(const std::vector<std::uint64_t>& unit_samples, std::size_t first, std::size_t last);
+  std::optional<std::size_t> take() override;
+  bool exhausted() const override { return m_next == m_last; }
+  double nextSamples() const override;
+  double samplesLeft() const override { return m_left; }
+  std::size_t expectedUnits() const override { return m_last - m_first; }
+
+ private:
+  const std::vector<std::uint64_t>& m_samples;
+  std::size_t m_first, m_next, m_last;
+  double m_left = 0;
+};
+
 // unit(device, u) traces unit u on device `device`; it may throw. A DeviceError
 // retires the device (its unit, and the units it had finished, are dealt
 // again: nothing is read back from a device that failed); any other exception (a
@@ -64,6 +105,14 @@ using UnitFn = std::function<void(std::size_t device, std::size_t unit)>;
 // frame's where it finished one. Every device takes a first unit, so its pace is
 // measured in every frame; it judges by worthTaking whether to take each unit
 // after that. A device between two units counts as busy to the others.
+// unit_samples: every unit of the frame; the units traced are those `source`
+// gives (a unit given back by a failed device is dealt again here, before any
+// other). progress's `units` is source.expectedUnits().
+DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
+                     UnitSource& source, const UnitFn& unit,
+                     const std::function<bool(std::size_t done, std::size_t units)>& progress,
+                     std::vector<double>& paces);
+// Every unit of the frame, in order.
 DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
                      const UnitFn& unit, const std::function<bool(std::size_t done, std::size_t units)>& progress,
                      std::vector<double>& paces);

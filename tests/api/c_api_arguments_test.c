@@ -4,6 +4,7 @@
  * function at fault. argv[1] is the scenes folder. Exits non-zero on the first
  * failed check's count. */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,6 +38,20 @@ static int failingExchange(void* user, int to_all, const void* data, uint64_t si
                            void* receiver) {
   (void)user, (void)to_all, (void)data, (void)size, (void)receive, (void)receiver;
   return 5;
+}
+
+/* Part 1 of 2 alone: every part's bytes are its own, so the parts agree on the frame. */
+static int echoExchange(void* user, int to_all, const void* data, uint64_t size, PrismReceiveFn receive,
+                        void* receiver) {
+  (void)user;
+  receive(receiver, 0, data, size);
+  if (to_all) receive(receiver, 1, data, size);
+  return 0;
+}
+
+static int failingCompareSwap(void* user, uint32_t word, uint64_t expected, uint64_t desired, uint64_t* found) {
+  (void)user, (void)word, (void)expected, (void)desired, (void)found;
+  return 7;
 }
 
 int main(int argc, char** argv) {
@@ -385,6 +400,23 @@ int main(int argc, char** argv) {
   CHECK_OK(prismSetFrameParts(ctx, &parts));
   EXPECT(prismRender(ctx, scene, &small, rgba, NULL), PRISM_ERROR_UNKNOWN, "prismRender");
   CHECK(strstr(prismGetLastError(), "returned 5") != NULL);
+  /* Dealing as devices come free: a compare-and-swap that fails fails the render. */
+  parts.exchange = echoExchange;
+  parts.compare_swap = failingCompareSwap;
+  CHECK_OK(prismSetFrameParts(ctx, &parts));
+  EXPECT(prismRender(ctx, scene, &small, rgba, NULL), PRISM_ERROR_UNKNOWN, "prismRender");
+  CHECK(strstr(prismGetLastError(), "compare-and-swap") != NULL && strstr(prismGetLastError(), "returned 7") != NULL);
+  /* A caller built before compare_swap: its shorter struct deals fixed stretches,
+   * compare_swap unread. Part 1's stretch is the render's one unit, which the
+   * echo says part 0 traced too: a claim made twice is an error. */
+  parts.struct_size = offsetof(PrismFrameParts, compare_swap);
+  CHECK_OK(prismSetFrameParts(ctx, &parts));
+  EXPECT(prismRender(ctx, scene, &small, rgba, NULL), PRISM_ERROR_UNKNOWN, "prismRender");
+  CHECK(strstr(prismGetLastError(), "parts 0 and 1 both traced unit 0") != NULL);
+  parts.struct_size = offsetof(PrismFrameParts, compare_swap) - 1;
+  BAD(prismSetFrameParts(ctx, &parts), "prismSetFrameParts");
+  parts.struct_size = sizeof parts;
+  parts.compare_swap = NULL;
   CHECK_OK(prismSetFrameParts(ctx, NULL));
   CHECK_OK(prismRender(ctx, scene, &small, rgba, NULL));
   parts.parts = 1;

@@ -6,6 +6,8 @@
 // has no unit to trace; part 0 reports every part's devices.
 #include <catch2/catch.hpp>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstring>
@@ -20,6 +22,7 @@
 #include "device_fixtures.h"
 #include "render/frame_parts.h"
 #include "render/part_resolve.h"
+#include "render/shared_stretches.h"
 
 using namespace prism;
 using namespace prism_test;
@@ -31,7 +34,16 @@ namespace {
 // receives; the next round starts once every part has.
 class Loopback {
  public:
-  explicit Loopback(std::uint32_t parts) : m_parts(parts), m_bytes(parts) {}
+  explicit Loopback(std::uint32_t parts) : m_parts(parts), m_bytes(parts), m_words(parts) {
+    for (auto& w : m_words) w = 0;
+  }
+
+  // FrameParts::compare_swap over words in memory.
+  std::uint64_t compareSwap(std::uint32_t word, std::uint64_t expected, std::uint64_t desired) {
+    m_words.at(word).compare_exchange_strong(expected, desired);
+    return expected;  // the value found
+  }
+  std::uint64_t word(std::uint32_t w) const { return m_words.at(w).load(); }
 
   std::vector<Bytes> exchange(std::uint32_t part, bool to_all, const Bytes& mine) {
     std::unique_lock<std::mutex> lock(m_mutex);
@@ -75,7 +87,17 @@ class Loopback {
   bool m_aborted = false;
   std::mutex m_mutex;
   std::condition_variable m_changed;
+  std::vector<std::atomic<std::uint64_t>> m_words;
 };
+
+// How the parts share the units: each its own stretch, or as their devices
+// come free (FrameParts::compare_swap); `before_take(part, loopback)` runs
+// before each of a part's compare-and-swaps (to hold a part back).
+struct Dealing {
+  bool as_devices_come_free = false;
+  std::function<void(std::uint32_t part, const Loopback&)> before_take;
+};
+const Dealing kStretches{false, nullptr}, kAsDevicesComeFree{true, nullptr};
 
 struct PartsOutcome {
   std::vector<RenderResult> results;
@@ -85,7 +107,8 @@ struct PartsOutcome {
 // Renders `scene` split into parts, part p on the devices parts_devices[p]
 // with options_of(p).
 PartsOutcome tryInParts(const std::vector<std::vector<Context*>>& parts_devices, const Scene& scene,
-                        const std::function<RenderOptions(std::uint32_t part)>& options_of) {
+                        const std::function<RenderOptions(std::uint32_t part)>& options_of,
+                        const Dealing& dealing = kStretches) {
   const auto parts = static_cast<std::uint32_t>(parts_devices.size());
   Loopback loopback(parts);
   std::vector<RenderResult> results(parts);
@@ -99,6 +122,11 @@ PartsOutcome tryInParts(const std::vector<std::vector<Context*>>& parts_devices,
         fp.part = p;
         fp.parts = parts;
         fp.exchange = [&loopback, p](bool to_all, const Bytes& mine) { return loopback.exchange(p, to_all, mine); };
+        if (dealing.as_devices_come_free)
+          fp.compare_swap = [&loopback, &dealing, p](std::uint32_t word, std::uint64_t expected, std::uint64_t desired) {
+            if (dealing.before_take) dealing.before_take(p, loopback);
+            return loopback.compareSwap(word, expected, desired);
+          };
         renderer.setFrameParts(fp);
         results[p] = renderer.render(scene, options_of(p));
       } catch (const std::exception& e) {
@@ -112,8 +140,8 @@ PartsOutcome tryInParts(const std::vector<std::vector<Context*>>& parts_devices,
 }
 
 std::vector<RenderResult> renderInParts(const std::vector<std::vector<Context*>>& parts_devices, const Scene& scene,
-                                        const RenderOptions& options) {
-  PartsOutcome outcome = tryInParts(parts_devices, scene, [&](std::uint32_t) { return options; });
+                                        const RenderOptions& options, const Dealing& dealing = kStretches) {
+  PartsOutcome outcome = tryInParts(parts_devices, scene, [&](std::uint32_t) { return options; }, dealing);
   for (const std::string& e : outcome.errors) REQUIRE(e.empty());
   return std::move(outcome.results);
 }
@@ -156,17 +184,20 @@ TEST_CASE("a frame split over processes is the same as one process's, bit for bi
       for (const auto& layout : {std::vector<std::vector<Context*>>{{all[0]}, {all[1]}},
                                  std::vector<std::vector<Context*>>{{all[0], all[1]}, {all[2]}},
                                  std::vector<std::vector<Context*>>{{all[2]}, {all[0]}, {all[1]}}}) {
-        const std::vector<RenderResult> parts = renderInParts(layout, scene, o);
-        requireSameFrame(reference, parts[0]);
-        // Part 0 reports every part's devices; they traced every sample once.
-        std::size_t devices = 0;
-        for (const auto& d : layout) devices += d.size();
-        REQUIRE(parts[0].stats.devices.size() == devices);
-        CHECK(parts[0].stats.devices.back().device.rfind("part " + std::to_string(layout.size() - 1) + ": ", 0) == 0);
-        CHECK(sharedSamples(parts[0].stats) == reference.stats.rays_by_kind[0]);
-        for (std::size_t p = 1; p < parts.size(); ++p) {
-          CHECK(allZero(parts[p].rgba));
-          CHECK(parts[p].rgba.size() == reference.rgba.size());
+        for (const Dealing& dealing : {kStretches, kAsDevicesComeFree}) {
+          INFO((dealing.as_devices_come_free ? "dealt as devices come free" : "fixed stretches"));
+          const std::vector<RenderResult> parts = renderInParts(layout, scene, o, dealing);
+          requireSameFrame(reference, parts[0]);
+          // Part 0 reports every part's devices; they traced every sample once.
+          std::size_t devices = 0;
+          for (const auto& d : layout) devices += d.size();
+          REQUIRE(parts[0].stats.devices.size() == devices);
+          CHECK(parts[0].stats.devices.back().device.rfind("part " + std::to_string(layout.size() - 1) + ": ", 0) == 0);
+          CHECK(sharedSamples(parts[0].stats) == reference.stats.rays_by_kind[0]);
+          for (std::size_t p = 1; p < parts.size(); ++p) {
+            CHECK(allZero(parts[p].rgba));
+            CHECK(parts[p].rgba.size() == reference.rgba.size());
+          }
         }
       }
     }
@@ -249,6 +280,52 @@ TEST_CASE("parts resolve their own pixels: the same bits as one process with eve
   o.height = 240;
   const RenderResult reference = one.render(scene, o);
   requireSameFrame(reference, renderInParts({{all[0]}, {all[1]}}, scene, o)[0]);
+}
+
+TEST_CASE("a part held back leaves its units to the others, and the frame is the same bits") {
+  // Dealt as devices come free, part 1 waits before its first take until part
+  // 0, done with its own stretch, has taken from the back of part 1's: part 0
+  // then holds two runs of units and part 1 one, which the resolve and the
+  // adaptive passes' colours must place as one process does.
+  const std::vector<Context*> all = poclDevices();
+  REQUIRE(all.size() >= 3);
+  Renderer one(*all[0]);
+  const Scene scene = loadSceneFile(PRISM_SOURCE_DIR "/scenes/whitted.json");
+  RenderOptions o = RenderOptions::fromScene(scene);
+  o.width = 160;
+  o.height = 120;
+  o.spp = 16;  // 5 units: stretches [0, 2) and [2, 5)
+  struct Case {
+    AaMode aa;
+    FilterKind filter;
+  };
+  for (const Case& c : {Case{AaMode::Jitter, FilterKind::Mitchell}, Case{AaMode::Jitter, FilterKind::Box},
+                        Case{AaMode::Quincunx, FilterKind::Box}, Case{AaMode::Adaptive, FilterKind::Box}}) {
+    o.aa = c.aa;
+    o.filter = c.filter;
+    o.spp = c.aa == AaMode::Jitter ? 16 : 1;
+    if (c.aa == AaMode::Quincunx) o.width = 480, o.height = 360;  // 173,641 corners: 3 units
+    INFO("aa " << static_cast<int>(c.aa) << ", filter " << static_cast<int>(c.filter));
+    const RenderResult reference = one.render(scene, o);
+    std::atomic<bool> held{false};
+    Dealing hold_part_1{true, [&held](std::uint32_t part, const Loopback& loopback) {
+                          if (part != 1 || held.exchange(true)) return;
+                          const auto until = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+                          while (SharedStretches::decode(loopback.word(1)).back == 0) {
+                            if (std::chrono::steady_clock::now() > until)
+                              throw std::runtime_error("part 0 never took part 1's units");
+                            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                          }
+                        }};
+    const std::vector<RenderResult> parts = renderInParts({{all[0]}, {all[1]}}, scene, o, hold_part_1);
+    requireSameFrame(reference, parts[0]);
+    const std::uint64_t units = (reference.stats.rays_by_kind[0] + Renderer::kSliceRays - 1) / Renderer::kSliceRays;
+    REQUIRE(parts[0].stats.devices.size() == 2);
+    if (c.aa != AaMode::Adaptive) {  // adaptive's passes are several deals; the first alone was held
+      CHECK(parts[0].stats.devices[0].units > partUnits(units, 0, 2).second);
+      CHECK(parts[0].stats.devices[0].units + parts[0].stats.devices[1].units == units);
+    }
+  }
 }
 
 TEST_CASE("check-nan across parts finds the first non-finite contribution in render order, as one process does") {

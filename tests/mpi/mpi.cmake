@@ -71,6 +71,27 @@ same(one_depth two_depth)
 # Several devices in each rank.
 render(2 two_all ${size} --device all --quiet)
 same(one two_all)
+# Ranks of different speeds (rank 1 on one PoCL thread, at the lowest
+# priority) deal the units as their devices come free, whichever takes which:
+# the same bits, and every unit traced once.
+set(many --width 320 --height 240 --aa jitter --spp 16)  # 1,228,800 samples: 19 units
+render(1 one_many ${many} --quiet)
+run(${MPIEXEC} --oversubscribe -np 1 ${PRISM} render "${scene}" -o "${WORK_DIR}/two_uneven.pfm" ${many} --device 0 --stats
+    : -np 1 -x POCL_MAX_PTHREAD_COUNT=1 nice -n 19 ${PRISM} render "${scene}" -o "${WORK_DIR}/two_uneven.pfm" ${many}
+    --device 0 --stats)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "ranks of different speeds: exited ${rc}:\n${out}${err}")
+endif()
+same(one_many two_uneven)
+string(REGEX MATCHALL "\\[[01]\\] part [01]: [^\n]* ([0-9]+) +[0-9]+ +[0-9.]+\n" shares "${out}")
+set(units 0)
+foreach(line IN LISTS shares)
+  string(REGEX REPLACE ".*: .* ([0-9]+) +[0-9]+ +[0-9.]+\n" "\\1" k "${line}")
+  math(EXPR units "${units} + ${k}")
+endforeach()
+if(NOT units EQUAL 19)
+  message(FATAL_ERROR "the ranks must trace the 19 units once between them, not ${units}:\n${out}")
+endif()
 
 # Adaptive sampling: every rank chooses each pass's points from every colour.
 render(1 one_adaptive --width 320 --height 240 --aa adaptive --quiet)
