@@ -113,12 +113,23 @@ int compareSwap(void* user, std::uint32_t word, std::uint64_t expected, std::uin
   return 0;
 }
 
-// Collective over comm: the words, zero before any rank swaps one.
+// Collective over comm: the words, zero before any rank swaps one. Where MPI
+// cannot make the window on every rank (no one-sided support for this
+// network), no rank uses it: each traces its own stretch.
 void openWords(PartsComm& comm) {
-  if (!g_serialized) return;  // each rank traces its own stretch
+  if (!g_serialized) return;  // the same on every rank (startRanks)
   std::uint64_t* base = nullptr;
   const MPI_Aint bytes = comm.rank == 0 ? static_cast<MPI_Aint>(comm.size) * 8 : 0;
-  MPI_Win_allocate(bytes, 8, MPI_INFO_NULL, comm.comm, &base, &comm.words);
+  MPI_Comm_set_errhandler(comm.comm, MPI_ERRORS_RETURN);
+  const int made = MPI_Win_allocate(bytes, 8, MPI_INFO_NULL, comm.comm, &base, &comm.words) == MPI_SUCCESS ? 1 : 0;
+  MPI_Comm_set_errhandler(comm.comm, MPI_ERRORS_ARE_FATAL);
+  int everywhere = 0;
+  MPI_Allreduce(&made, &everywhere, 1, MPI_INT, MPI_MIN, comm.comm);
+  if (!everywhere) {
+    // Not freed: MPI_Win_free would wait for the ranks that have none.
+    comm.words = MPI_WIN_NULL;
+    return;
+  }
   MPI_Win_lock_all(0, comm.words);
   if (comm.rank == 0) {
     const std::uint64_t zero = 0;
@@ -162,7 +173,6 @@ Ranks startRanks() {
   // only this thread, each rank traces a fixed stretch of the frame.
   int provided = MPI_THREAD_SINGLE;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
-  g_serialized = provided >= MPI_THREAD_SERIALIZED;
   g_started = true;
   if (provided < MPI_THREAD_FUNNELED) {
     MPI_Finalize();
@@ -170,6 +180,10 @@ Ranks startRanks() {
     throw std::runtime_error("MPI offers no threads beside its calls (MPI_THREAD_FUNNELED), which prism needs");
   }
   MPI_Comm_dup(MPI_COMM_WORLD, &g_comm);
+  // Every rank deals the same way, or the window's making would wait for some.
+  int lowest = provided;
+  MPI_Allreduce(&provided, &lowest, 1, MPI_INT, MPI_MIN, g_comm);
+  g_serialized = lowest >= MPI_THREAD_SERIALIZED;
   int rank = 0, size = 1;
   MPI_Comm_rank(g_comm, &rank);
   MPI_Comm_size(g_comm, &size);

@@ -473,14 +473,17 @@ int runRender(const std::vector<std::string>& args) {
     const std::string alone =
         "MPI rank " + std::to_string(ranks.rank) + " of " + std::to_string(ranks.size) + " (" + devices + ")";
     group_devices = deal.group_parts > 1 ? std::to_string(deal.group_parts) + " MPI ranks (rank " +
-                                               std::to_string(ranks.rank) + " on " + devices + ")"
+                                               std::to_string(ranks.rank) + " on " + devices +
+                                               (group_parts.compare_swap ? "; units dealt as devices come free)"
+                                                                         : "; a stretch of units each)")
                                          : alone;
     devices = alone;
   } else if (ranks.shared()) {
     // Every rank renders its part of the frame; rank 0 writes it and reports.
     const PrismFrameParts parts = frameParts(ranks);
     if (prismSetFrameParts(context.get(), &parts) != PRISM_OK) return failWithLastError();
-    devices = std::to_string(ranks.size) + " MPI ranks (rank 0 on " + devices + ")";
+    devices = std::to_string(ranks.size) + " MPI ranks (rank 0 on " + devices +
+              (parts.compare_swap ? "; units dealt as devices come free)" : "; a stretch of units each)");
   }
 
   // Each rank that writes frames checks where they go (rank 0 did).

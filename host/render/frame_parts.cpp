@@ -39,7 +39,7 @@ void ByteReader::expectDone() const {
 }
 
 std::uint64_t frameFingerprint(const GpuScene& scene, const RenderOptions& options, FirstHitMode first_hit,
-                               ShadowMode shadows, AccelKind accel) {
+                               ShadowMode shadows, AccelKind accel, bool dealt_as_devices_come_free) {
   std::uint64_t hash = 14695981039346656037ull;
   const auto add = [&hash](const void* data, std::size_t size) {
     const auto* p = static_cast<const std::uint8_t*>(data);
@@ -61,6 +61,7 @@ std::uint64_t frameFingerprint(const GpuScene& scene, const RenderOptions& optio
   value(static_cast<std::int64_t>(first_hit));
   value(static_cast<std::int64_t>(shadows));
   value(static_cast<std::int64_t>(accel));
+  value(std::int64_t{dealt_as_devices_come_free});
   value(std::int64_t{options.check_nan});
   add(&scene.camera, sizeof scene.camera);  // every field 4 bytes, the padding explicit and zero
   add(scene.ambient, sizeof scene.ambient);

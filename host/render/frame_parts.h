@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct FrameParts {
   // each part traces its own stretch (partUnits). Called from any of the
   // render's threads, one call at a time. Throws when the transport fails.
   std::function<std::uint64_t(std::uint32_t word, std::uint64_t expected, std::uint64_t desired)> compare_swap;
+  // The deals made on those words so far (their round, render/shared_stretches.h):
+  // kept with the parts, so that every render given these parts goes on from
+  // the last; a FrameParts made for fresh words starts a counter of its own.
+  std::shared_ptr<std::uint32_t> deals = std::make_shared<std::uint32_t>(0);
 
   bool shared() const { return parts > 1; }
 };
@@ -83,9 +88,10 @@ class ByteReader {
 
 // What must be the same on every part for their units to make one frame: the
 // options, the choices made from them, the camera, the mesh data and the counts
-// of objects, materials and lights, hashed (FNV-1a, 64 bits).
+// of objects, materials and lights, and how the units are dealt (every part
+// with a compare-and-swap, or none), hashed (FNV-1a, 64 bits).
 std::uint64_t frameFingerprint(const GpuScene& scene, const RenderOptions& options, FirstHitMode first_hit,
-                               ShadowMode shadows, AccelKind accel);
+                               ShadowMode shadows, AccelKind accel, bool dealt_as_devices_come_free);
 
 // Which part traced each unit, from each part's own list: every part sends
 // the runs of units it traced (packUnitRuns) and reads everyone's

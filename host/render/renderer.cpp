@@ -87,7 +87,9 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   result.stats.shadows = planShadows(options.shadows, accel->kind, gpu.objects, gpu.lights, &light_buffer);
   if (result.stats.shadows == ShadowMode::LightBuffer) result.stats.light_buffer_candidates = light_buffer.mean_candidates;
 
-  if (m_parts.shared()) checkSameFrame(frameFingerprint(gpu, options, first_hit, result.stats.shadows, accel->kind));
+  if (m_parts.shared())
+    checkSameFrame(frameFingerprint(gpu, options, first_hit, result.stats.shadows, accel->kind,
+                                    static_cast<bool>(m_parts.compare_swap)));
 
   FrameSetup frame;
   frame.scene = &gpu;
@@ -226,7 +228,8 @@ void Renderer::checkSameFrame(std::uint64_t fingerprint) {
     in.expectDone();
     if (theirs != fingerprint)
       throw std::invalid_argument("frame parts: part " + std::to_string(p) + " of " + std::to_string(m_parts.parts) +
-                                  " renders a different frame (scene, options or mesh data) from part " +
+                                  " renders a different frame (scene, options or mesh data), or deals its units otherwise (a " +
+                                  "compare_swap on some parts only), from part " +
                                   std::to_string(m_parts.part) + ": every part must render the same");
   }
 }
@@ -236,7 +239,6 @@ void Renderer::setFrameParts(FrameParts parts) {
     throw std::invalid_argument("Renderer::setFrameParts: part must be below parts");
   if (parts.shared() && !parts.exchange) throw std::invalid_argument("Renderer::setFrameParts: no exchange");
   m_parts = std::move(parts);
-  m_deal_round = 0;  // the words are fresh
 }
 
 void Renderer::setFilmBatchSlices(size_t slices) {
@@ -260,8 +262,10 @@ Renderer::DealtUnits Renderer::deal(const std::vector<std::uint64_t>& unit_sampl
   const size_t units = unit_samples.size();
   std::unique_ptr<UnitSource> source;
   if (m_parts.shared() && m_parts.compare_swap) {
-    source = std::make_unique<SharedStretches>(unit_samples, m_parts.part, m_parts.parts, ++m_deal_round,
-                                               m_parts.compare_swap);
+    // A deal without units touches no word, and takes no round.
+    const std::uint32_t round = units > 0 ? ++*m_parts.deals : *m_parts.deals;
+    source = std::make_unique<SharedStretches>(unit_samples, m_parts.part, m_parts.parts,
+                                               static_cast<std::uint16_t>(round), m_parts.compare_swap);
   } else {
     const auto [first, last] = partUnits(units, m_parts.part, m_parts.parts);
     source = std::make_unique<UnitRange>(unit_samples, first, last);
@@ -281,9 +285,14 @@ Renderer::DealtUnits Renderer::deal(const std::vector<std::uint64_t>& unit_sampl
     counts[u] = std::move(tracer_counts);
   };
   // With one device alone, progress comes chunk by chunk from the unit itself.
+  // Its whole grows when this part takes another's units: the fraction shown never goes back.
   std::function<bool(size_t, size_t)> step;
+  double shown = 0;
   if (unitsOfSlices() && progress)
-    step = [&](size_t done, size_t whole) { return progress(static_cast<double>(done) / static_cast<double>(whole)); };
+    step = [&](size_t done, size_t whole) {
+      shown = std::max(shown, static_cast<double>(done) / static_cast<double>(whole));
+      return progress(shown);
+    };
   DealResult dealt = dealUnits(result.stats.devices, unit_samples, *source, traced, step, m_paces);
   for (std::string& w : dealt.warnings) result.stats.warnings.push_back(std::move(w));
   if (dealt.cancelled) throw RenderCancelled();

@@ -130,7 +130,6 @@ class Renderer {
   AccelBuildOptions m_accel_build;
   std::vector<std::pair<size_t, std::uint64_t>> m_faults;  // (device, unit)
   FrameParts m_parts;
-  std::uint16_t m_deal_round = 0;  // deals since the parts were set (render/shared_stretches.h)
 };
 
 }  // namespace prism

@@ -69,8 +69,22 @@ std::optional<std::size_t> SharedStretches::takeFrom(std::uint32_t q, bool from_
   }
 }
 
+void SharedStretches::markOwnWord() {
+  // Only its owner writes an empty stretch's word (no one takes from it).
+  m_seen[m_part] = m_swap(m_part, m_seen[m_part], m_seen[m_part]);
+  if (decode(m_seen[m_part]).round == m_round) return;
+  const std::uint64_t fresh = encode(Word{m_round, 0, 0});
+  m_swap(m_part, m_seen[m_part], fresh);
+  m_seen[m_part] = fresh;
+}
+
 std::optional<std::size_t> SharedStretches::take() {
   if (m_exhausted) return std::nullopt;
+  if (!m_began) {
+    m_began = true;
+    const auto [first, last] = partUnits(m_samples.size(), m_part, m_parts);
+    if (first == last) markOwnWord();
+  }
   if (const std::optional<std::size_t> own = takeFrom(m_part, false)) return own;
   // Its own stretch is done: the back of the stretch with the most left, as
   // read now (a read is a swap that changes nothing).
@@ -90,9 +104,13 @@ std::optional<std::size_t> SharedStretches::take() {
 }
 
 double SharedStretches::samplesLeft() const {
-  std::size_t left = 0;
-  for (std::uint32_t q = 0; q < m_parts; ++q) left += leftIn(q);
-  return static_cast<double>(left) * m_mean;
+  // Its own stretch while it lasts; then its share of the others' as last read
+  // (the other parts take from them too).
+  const std::size_t own = leftIn(m_part);
+  if (own > 0) return static_cast<double>(own) * m_mean;
+  std::size_t others = 0;
+  for (std::uint32_t q = 0; q < m_parts; ++q) others += q == m_part ? 0 : leftIn(q);
+  return static_cast<double>(others) * m_mean / static_cast<double>(m_parts);
 }
 
 std::size_t SharedStretches::expectedUnits() const { return m_taken + leftIn(m_part); }

@@ -4,11 +4,13 @@
 // units stay contiguous; with its stretch done, it takes from the back of the
 // stretch with the most units left. The state is one 64-bit word per part that
 // every part can compare-and-swap (FrameParts::compare_swap; over MPI, a window
-// on rank 0): the deal's round and the units taken from the stretch's front
-// and back. A word of another round reads as untouched, so the words need no
-// reset between deals: every part starts the next deal only after an exchange
-// that follows everyone's last take of this one, and a stretch with units is
-// emptied in every deal, so a stale word is at most one round old or empty.
+// on rank 0): the deal's round (16 bits) and the units taken from the
+// stretch's front and back. A word of another round reads as untouched, so the
+// words need no reset between deals: every part starts the next deal only
+// after an exchange that follows everyone's last take of this one, and every
+// word is brought to the round in every deal with units (a stretch with units
+// is emptied; the owner of an empty one marks it at its first take), so a
+// stale word is one round old and the round's wrap at 65,536 is harmless.
 #pragma once
 
 #include <cstddef>
@@ -29,7 +31,9 @@ class SharedStretches : public UnitSource {
   // The most units a stretch can hold (24 bits of the word count each end).
   static constexpr std::size_t kMaxStretch = (std::size_t{1} << 24) - 1;
 
-  // Throws std::invalid_argument unless part < parts and every stretch fits kMaxStretch.
+  // round: the deal's, counted by the parts alike (deals without units take
+  // none). Throws std::invalid_argument unless part < parts and every stretch
+  // fits kMaxStretch.
   SharedStretches(const std::vector<std::uint64_t>& unit_samples, std::uint32_t part, std::uint32_t parts,
                   std::uint16_t round, CompareSwap compare_swap);
 
@@ -54,6 +58,8 @@ class SharedStretches : public UnitSource {
   // Takes a unit from the front (own stretch) or back of part q's stretch;
   // none once it is empty.
   std::optional<std::size_t> takeFrom(std::uint32_t q, bool from_back);
+  // Brings this part's word to this round (its stretch is empty).
+  void markOwnWord();
 
   const std::vector<std::uint64_t>& m_samples;
   std::uint32_t m_part, m_parts;
@@ -63,6 +69,7 @@ class SharedStretches : public UnitSource {
   double m_largest = 0, m_mean = 0;
   std::size_t m_taken = 0;
   bool m_exhausted = false;
+  bool m_began = false;  // take has been called
 };
 
 }  // namespace prism

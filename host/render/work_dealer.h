@@ -107,7 +107,7 @@ using UnitFn = std::function<void(std::size_t device, std::size_t unit)>;
 // after that. A device between two units counts as busy to the others.
 // unit_samples: every unit of the frame; the units traced are those `source`
 // gives (a unit given back by a failed device is dealt again here, before any
-// other). progress's `units` is source.expectedUnits().
+// other). progress's `units` is source.expectedUnits(), or the units done if more.
 DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::uint64_t>& unit_samples,
                      UnitSource& source, const UnitFn& unit,
                      const std::function<bool(std::size_t done, std::size_t units)>& progress,

@@ -36,14 +36,15 @@ struct Words {
 
 struct Taken {
   std::vector<std::vector<std::size_t>> by_part;  // in the order each part took them
+  std::atomic<int> not_exhausted{0};               // takes that gave none without saying so
 };
 
 // Each part on its own thread takes until none is left; `threads_per_part`
 // threads of a part share one SharedStretches under a lock, as a part's devices do.
-Taken dealOnce(Words& words, const std::vector<std::uint64_t>& unit_samples, std::uint32_t parts,
+void dealOnce(Taken& taken, Words& words, const std::vector<std::uint64_t>& unit_samples, std::uint32_t parts,
                std::uint16_t round, unsigned threads_per_part, std::uint32_t seed) {
-  Taken taken;
-  taken.by_part.resize(parts);
+  taken.by_part.assign(parts, {});
+  taken.not_exhausted = 0;
   std::vector<std::thread> threads;
   std::vector<std::unique_ptr<SharedStretches>> sources;
   std::vector<std::unique_ptr<std::mutex>> locks;
@@ -60,7 +61,8 @@ Taken dealOnce(Words& words, const std::vector<std::uint64_t>& unit_samples, std
             std::lock_guard<std::mutex> lock(*locks[p]);
             const std::optional<std::size_t> u = sources[p]->take();
             if (!u) {
-              CHECK(sources[p]->exhausted());
+              // Checked after the join: Catch2's assertions are not thread-safe.
+              if (!sources[p]->exhausted()) ++taken.not_exhausted;
               return;
             }
             taken.by_part[p].push_back(*u);
@@ -70,10 +72,10 @@ Taken dealOnce(Words& words, const std::vector<std::uint64_t>& unit_samples, std
         }
       });
   for (std::thread& t : threads) t.join();
-  return taken;
 }
 
 void checkDeal(const Taken& taken, std::size_t units, std::uint32_t parts) {
+  CHECK(taken.not_exhausted == 0);
   std::vector<int> times(units, 0);
   for (std::uint32_t p = 0; p < parts; ++p) {
     const auto [first, last] = partUnits(units, p, parts);
@@ -108,8 +110,11 @@ TEST_CASE("shared stretches: every unit is taken once, own units first from the 
         const std::vector<std::uint64_t> samples(units, 100);
         Words words(parts);
         // The same words through several deals, as a renderer's frames use them.
-        for (std::uint16_t round = 1; round <= 3; ++round)
-          checkDeal(dealOnce(words, samples, parts, round, threads, round), units, parts);
+        for (std::uint16_t round = 1; round <= 3; ++round) {
+          Taken taken;
+          dealOnce(taken, words, samples, parts, round, threads, round);
+          checkDeal(taken, units, parts);
+        }
       }
     }
   }
@@ -138,6 +143,34 @@ TEST_CASE("shared stretches: a part that takes nothing leaves its stretch to the
   SharedStretches next(samples, 1, 3, 2, words.swap());
   CHECK(next.take() == std::optional<std::size_t>(10));
   CHECK(next.expectedUnits() == 10);
+}
+
+TEST_CASE("shared stretches: the round wraps at 65,536 deals without reading an old word as this deal's") {
+  // 3 units over 5 parts: parts 0 and 2 (partUnits) have empty stretches, so
+  // no one takes from their words; their owners mark them each deal, or after
+  // 65,536 deals a word left from the first would read as this round's.
+  const std::vector<std::uint64_t> few(3, 10), many(10, 10);
+  Words words(5);
+  std::uint16_t round = 1;
+  // The parts one after another on this thread (65,536 deals on threads would be slow).
+  const auto deal = [&](const std::vector<std::uint64_t>& units) {
+    std::vector<int> times(units.size(), 0);
+    std::vector<std::unique_ptr<SharedStretches>> parts;
+    for (std::uint32_t p = 0; p < 5; ++p)
+      parts.push_back(std::make_unique<SharedStretches>(units, p, 5, round, words.swap()));
+    ++round;
+    for (auto& part : parts)
+      while (const auto u = part->take()) ++times.at(*u);
+    for (int t : times)
+      if (t != 1) return false;
+    return true;
+  };
+  REQUIRE(deal(many));  // every stretch has two units: every word at round 1
+  bool all = true;
+  for (int k = 0; k < 65535; ++k) all = deal(few) && all;  // rounds 2 to 65,535, then 0
+  CHECK(all);
+  REQUIRE(round == 1);
+  CHECK(deal(many));  // round 1 again: would find parts 0 and 2's words of the first deal taken
 }
 
 TEST_CASE("shared stretches: the word's fields round-trip, and a stretch too long for them is refused") {
