@@ -13,6 +13,7 @@
 #include "bench_data.h"
 #include "accel_workloads.h"
 #include "accel_bench.h"
+#include "accel/prim_ref.h"
 #include "device/context.h"
 #include "device/device_list.h"
 #include "kernels/shared/ray_gpu.h"
@@ -227,9 +228,11 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
     // Z-buffer: the host's set-up, then the pass (one untimed run first: PoCL
     // finishes compiling at the first launch of a work-group size).
     FirstHitPass pass(context);
+    // A render has them from the structure's build (DeviceAccel::primitive_options).
+    const std::string kinds = primitiveKernelOptions(gpu.objects);
     row.setup_seconds = medianSeconds(options.repeats, [&] {
       auto start = Clock::now();
-      pass.prepare(gpu);
+      pass.prepare(gpu, kinds);
       context.finish();
       return secondsSince(start);
     });

@@ -107,13 +107,15 @@ std::unique_ptr<DeviceAccel> buildAccel(AccelKind kind, const std::vector<Object
     accel->stats.mean_prims_per_leaf = static_cast<double>(primitives);
     accel->stats.sah_cost = static_cast<double>(primitives);
     writeSceneHeader(Aabb(), *accel);
-    accel->kernel_options += " " + primitiveKernelOptions(objects);
+    accel->primitive_options = primitiveKernelOptions(objects);
+    accel->kernel_options += " " + accel->primitive_options;
   } else {
     PrimitiveSet prims = gatherPrimitives(objects, options.threads);
     e.build(objects, prims, options, *accel);
     // Moving objects' code is compiled only into the programs of scenes that
     // have some, and so is each larger kind's (quadrics, polygons, polyhedra, patches).
-    accel->kernel_options += " " + primitiveKernelOptions(prims.kinds, prims.any_moving);
+    accel->primitive_options = primitiveKernelOptions(prims.kinds, prims.any_moving);
+    accel->kernel_options += " " + accel->primitive_options;
     accel->unbounded = prims.unbounded;
     accel->stats.primitives = prims.bounded.size();
     accel->stats.unbounded = prims.unbounded.size();

@@ -63,6 +63,9 @@ struct DeviceAccel {
   // traversal stack depth this tree needs, and what the primitives ask
   // (primitiveKernelOptions: kMotionKernelOption, the kinds to compile).
   std::string kernel_options;
+  // Of those, what the scene's primitives ask (primitiveKernelOptions), for
+  // the other programs that read the geometry (the first-hit pass).
+  std::string primitive_options;
   // Words 0 and 1: the scene box of the bounded primitives (lo xyz, hi xyz);
   // from word 2: the structure's nodes (BvhNodeGpu, OctreeNodeGpu, BspNodeGpu).
   std::vector<AccelWord> nodes;

@@ -160,8 +160,9 @@ Device:
                     one that fails mid-frame is left out with a warning, and the
                     image is the same bit for bit as on one device of that kind.
                     Under 'mpirun -np N prism render ...' (a build with MPI) the N
-                    processes share each frame, each on its --device; rank 0
-                    writes the image, the same bit for bit as one process's
+                    processes share each frame, each on its --device, a rank
+                    with faster devices taking more of it; rank 0 writes the
+                    image, the same bit for bit as one process's
   --no-cache        compile the kernels afresh, without reading or filling the kernel
                     cache (see PRISM_CACHE_DIR in 'prism --help')
 

@@ -119,7 +119,7 @@ void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats, bool mark_a
   }
   if (m_zbuffer) {
     if (!m_firsthit) m_firsthit = std::make_unique<FirstHitPass>(m_context);
-    m_firsthit->prepare(gpu);
+    m_firsthit->prepare(gpu, accel.primitive_options);
   }
   m_materials = Buffer(m_context, gpu.materials.size() * sizeof(MaterialGpu));
   m_materials.writeVector(gpu.materials);

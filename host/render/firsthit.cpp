@@ -22,7 +22,7 @@ void upload(Context& context, Buffer& b, const std::vector<T>& v) {
 FirstHitPass::FirstHitPass(Context& context, ZBufferAtomics atomics)
     : m_context(context), m_atomics(atomics), m_scan(context) {}
 
-void FirstHitPass::prepare(const GpuScene& scene) {
+void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_options) {
   const CameraGpu& c = scene.camera;
   if (c.width < 1 || c.height < 1) throw std::invalid_argument("first hit zbuffer: the camera has an empty film");
   const DeviceDescription& device = m_context.device();
@@ -33,7 +33,7 @@ void FirstHitPass::prepare(const GpuScene& scene) {
                                 " lacks cl_khr_int64_extended_atomics");
   m_wide = m_atomics == ZBufferAtomics::Wide || (m_atomics == ZBufferAtomics::Auto && has_wide);
   std::string options = m_wide ? "-DPRISM_ZBUFFER_WIDE" : "";
-  options += " " + primitiveKernelOptions(scene.objects);
+  options += " " + primitive_options;
   m_count_cells = m_context.kernel("firsthit.cl", "firsthit_count_cells", options);
   m_sort_samples = m_context.kernel("firsthit.cl", "firsthit_sort_samples", options);
   m_pixel_counts = m_context.kernel("firsthit.cl", "firsthit_pixel_counts", options);
@@ -240,7 +240,7 @@ std::vector<HitGpu> firstHits(Context& context, const GpuScene& scene, const std
   const size_t count = sample_xy.size() / 2;
   if (count == 0) return {};
   FirstHitPass pass(context, atomics);
-  pass.prepare(scene);
+  pass.prepare(scene, primitiveKernelOptions(scene.objects));
   GeometryBuffers geometry(context, scene);
   Buffer xy(context, sample_xy.size() * sizeof(float));
   xy.writeVector(sample_xy);

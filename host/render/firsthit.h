@@ -40,7 +40,9 @@ class FirstHitPass {
 
   // The scene's camera and what the kernels need besides its geometry:
   // the primitives that are not plain triangles, with their world bounds.
-  void prepare(const GpuScene& scene);
+  // primitive_options: primitiveKernelOptions of the scene (the structure's
+  // build has them: DeviceAccel::primitive_options).
+  void prepare(const GpuScene& scene, const std::string& primitive_options);
   // The depth + id entries of the `count` positions xy[2k], xy[2k+1] for k in
   // [first, first + count) (film coordinates in [0, W] x [0, H]) of the
   // scene whose geometry is uploaded in `geometry`. Replaces the last batch. pixel_spp > 0 says the

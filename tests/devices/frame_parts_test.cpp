@@ -146,6 +146,14 @@ std::vector<RenderResult> renderInParts(const std::vector<std::vector<Context*>>
   return std::move(outcome.results);
 }
 
+// The scene's own options at width x height.
+RenderOptions sized(const Scene& scene, int width, int height) {
+  RenderOptions o = RenderOptions::fromScene(scene);
+  o.width = width;
+  o.height = height;
+  return o;
+}
+
 bool allZero(const std::vector<float>& v) {
   for (float x : v)
     if (x != 0.f) return false;
@@ -262,9 +270,7 @@ TEST_CASE("parts resolve their own pixels: the same bits as one process with eve
   REQUIRE(all.size() >= 3);
   Renderer one(*all[0]);
   const Scene scene = loadSceneFile(PRISM_SOURCE_DIR "/scenes/whitted.json");
-  RenderOptions o = RenderOptions::fromScene(scene);
-  o.width = 160;
-  o.height = 120;
+  RenderOptions o = sized(scene, 160, 120);
   o.aa = AaMode::Jitter;
   o.spp = 16;  // 307,200 samples: 5 units, so each part has whole pixels far inside its stretch
   for (FilterKind f : {FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian, FilterKind::Mitchell}) {
@@ -291,10 +297,7 @@ TEST_CASE("a part held back leaves its units to the others, and the frame is the
   REQUIRE(all.size() >= 3);
   Renderer one(*all[0]);
   const Scene scene = loadSceneFile(PRISM_SOURCE_DIR "/scenes/whitted.json");
-  RenderOptions o = RenderOptions::fromScene(scene);
-  o.width = 160;
-  o.height = 120;
-  o.spp = 16;  // 5 units: stretches [0, 2) and [2, 5)
+  RenderOptions o = sized(scene, 160, 120);
   struct Case {
     AaMode aa;
     FilterKind filter;
@@ -303,21 +306,31 @@ TEST_CASE("a part held back leaves its units to the others, and the frame is the
                         Case{AaMode::Quincunx, FilterKind::Box}, Case{AaMode::Adaptive, FilterKind::Box}}) {
     o.aa = c.aa;
     o.filter = c.filter;
-    o.spp = c.aa == AaMode::Jitter ? 16 : 1;
+    o.spp = c.aa == AaMode::Jitter ? 16 : 1;  // jitter: 5 units, stretches [0, 2) and [2, 5)
     // Quincunx: 173,641 corners, 3 units; adaptive: its first pass as many.
     o.width = c.aa == AaMode::Jitter ? 160 : 480;
     o.height = c.aa == AaMode::Jitter ? 120 : 360;
     INFO("aa " << static_cast<int>(c.aa) << ", filter " << static_cast<int>(c.filter));
     const RenderResult reference = one.render(scene, o);
+    // In the first deal (round 1): part 1 waits until part 0 has taken from
+    // its back; part 0 then waits until part 1 has taken its front, so both
+    // hold units of part 1's stretch whatever the threads' speeds.
     std::atomic<bool> held{false};
     Dealing hold_part_1{true, [&held](std::uint32_t part, const Loopback& loopback) {
-                          if (part != 1 || held.exchange(true)) return;
                           const auto until = std::chrono::steady_clock::now() + std::chrono::minutes(2);
-                          while (SharedStretches::decode(loopback.word(1)).back == 0) {
-                            if (std::chrono::steady_clock::now() > until)
-                              throw std::runtime_error("part 0 never took part 1's units");
-                            std::this_thread::sleep_for(std::chrono::milliseconds(1));
-                          }
+                          const auto wait_while = [&](auto&& still) {
+                            while (still(SharedStretches::decode(loopback.word(1)))) {
+                              if (std::chrono::steady_clock::now() > until)
+                                throw std::runtime_error("the parts never took each other's turn");
+                              std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                            }
+                          };
+                          if (part == 1 && !held.exchange(true))
+                            wait_while([](const SharedStretches::Word& w) { return w.back == 0; });
+                          if (part == 0)
+                            wait_while([](const SharedStretches::Word& w) {
+                              return w.round == 1 && w.back > 0 && w.front == 0;
+                            });
                         }};
     const std::vector<RenderResult> parts = renderInParts({{all[0]}, {all[1]}}, scene, o, hold_part_1);
     requireSameFrame(reference, parts[0]);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/prim_ref.h"
 #include "accel_workloads.h"
 #include "kernels/shared/ray_gpu.h"
 #include "render/gpu_scene.h"
@@ -166,7 +167,7 @@ void checkAgreement(const Scene& scene, const std::vector<float>& xy) {
 FirstHitStats passStats(const GpuScene& gpu, const std::vector<float>& xy) {
   Context& ctx = sharedContext();
   FirstHitPass pass(ctx);
-  pass.prepare(gpu);
+  pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
   GeometryBuffers objects(ctx, gpu);
   Buffer pos(ctx, xy.size() * sizeof(float)), hits(ctx, xy.size() / 2 * sizeof(HitGpu));
   pos.writeVector(xy);
