@@ -44,7 +44,8 @@ struct PartsComm {
   MPI_Comm comm = MPI_COMM_NULL;
   int rank = 0, size = 1;
   // PrismFrameParts.compare_swap's words, one a rank, on the communicator's
-  // rank 0 (MPI_WIN_NULL where MPI offers too few threads for the dealing).
+  // rank 0 (MPI_WIN_NULL where some rank has too few of MPI's threads for the
+  // dealing, or MPI could not make the window: openWords).
   MPI_Win words = MPI_WIN_NULL;
 };
 PartsComm g_all, g_group;

@@ -83,17 +83,31 @@ std::string ByteReader::getString() {
   return s;
 }
 
-void packUnitRuns(ByteWriter& out, const std::vector<std::size_t>& owner, std::size_t no_owner) {
-  std::vector<std::uint64_t> runs;  // first, last, first, last, ...
-  for (std::size_t u = 0; u < owner.size(); ++u) {
-    if (owner[u] == no_owner) continue;
-    if (!runs.empty() && runs.back() == u)
-      runs.back() = u + 1;
+namespace {
+
+// The runs [first, last) of consecutive units u below `units` where mine(u).
+template <typename Mine>
+std::vector<std::pair<std::size_t, std::size_t>> runsWhere(std::size_t units, Mine&& mine) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for (std::size_t u = 0; u < units; ++u) {
+    if (!mine(u)) continue;
+    if (!runs.empty() && runs.back().second == u)
+      ++runs.back().second;
     else
-      runs.insert(runs.end(), {u, u + 1});
+      runs.emplace_back(u, u + 1);
   }
-  out.put<std::uint64_t>(runs.size() / 2);
-  out.putArray(runs.data(), runs.size());
+  return runs;
+}
+
+}  // namespace
+
+void packUnitRuns(ByteWriter& out, const std::vector<std::size_t>& owner, std::size_t no_owner) {
+  const auto runs = runsWhere(owner.size(), [&](std::size_t u) { return owner[u] != no_owner; });
+  out.put<std::uint64_t>(runs.size());
+  for (const auto& [first, last] : runs) {
+    out.put<std::uint64_t>(first);
+    out.put<std::uint64_t>(last);
+  }
 }
 
 void unpackUnitRuns(ByteReader& in, std::uint32_t part, std::vector<std::uint32_t>& part_of) {
@@ -120,15 +134,7 @@ void checkUnitsCovered(const std::vector<std::uint32_t>& part_of) {
 
 std::vector<std::pair<std::size_t, std::size_t>> unitRuns(const std::vector<std::uint32_t>& part_of,
                                                           std::uint32_t part) {
-  std::vector<std::pair<std::size_t, std::size_t>> runs;
-  for (std::size_t u = 0; u < part_of.size(); ++u) {
-    if (part_of[u] != part) continue;
-    if (!runs.empty() && runs.back().second == u)
-      ++runs.back().second;
-    else
-      runs.emplace_back(u, u + 1);
-  }
-  return runs;
+  return runsWhere(part_of.size(), [&](std::size_t u) { return part_of[u] == part; });
 }
 
 void packUnitCounts(ByteWriter& out, const RenderStats* counts, std::size_t n) {

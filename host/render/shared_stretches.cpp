@@ -22,7 +22,7 @@ SharedStretches::Word SharedStretches::decode(std::uint64_t bits) {
 
 SharedStretches::SharedStretches(const std::vector<std::uint64_t>& unit_samples, std::uint32_t part,
                                  std::uint32_t parts, std::uint16_t round, CompareSwap compare_swap)
-    : m_samples(unit_samples), m_part(part), m_parts(parts), m_round(round), m_swap(std::move(compare_swap)),
+    : m_units(unit_samples.size()), m_part(part), m_parts(parts), m_round(round), m_swap(std::move(compare_swap)),
       m_seen(parts, 0) {
   if (parts == 0 || part >= parts) throw std::invalid_argument("SharedStretches: part must be below parts");
   if (!m_swap) throw std::invalid_argument("SharedStretches: no compare-and-swap");
@@ -45,14 +45,14 @@ SharedStretches::Word SharedStretches::seen(std::uint32_t q) const {
 }
 
 std::size_t SharedStretches::leftIn(std::uint32_t q) const {
-  const auto [first, last] = partUnits(m_samples.size(), q, m_parts);
+  const auto [first, last] = partUnits(m_units, q, m_parts);
   const Word w = seen(q);
   const std::size_t taken = std::size_t{w.front} + w.back;
   return last - first > taken ? last - first - taken : 0;
 }
 
 std::optional<std::size_t> SharedStretches::takeFrom(std::uint32_t q, bool from_back) {
-  const auto [first, last] = partUnits(m_samples.size(), q, m_parts);
+  const auto [first, last] = partUnits(m_units, q, m_parts);
   for (;;) {
     if (leftIn(q) == 0) return std::nullopt;  // the words only grow within a round
     Word next = seen(q);
@@ -70,19 +70,18 @@ std::optional<std::size_t> SharedStretches::takeFrom(std::uint32_t q, bool from_
 }
 
 void SharedStretches::markOwnWord() {
-  // Only its owner writes an empty stretch's word (no one takes from it).
-  m_seen[m_part] = m_swap(m_part, m_seen[m_part], m_seen[m_part]);
-  if (decode(m_seen[m_part]).round == m_round) return;
   const std::uint64_t fresh = encode(Word{m_round, 0, 0});
-  m_swap(m_part, m_seen[m_part], fresh);
-  m_seen[m_part] = fresh;
+  while (decode(m_seen[m_part]).round != m_round) {
+    const std::uint64_t found = m_swap(m_part, m_seen[m_part], fresh);
+    m_seen[m_part] = found == m_seen[m_part] ? fresh : found;
+  }
 }
 
 std::optional<std::size_t> SharedStretches::take() {
   if (m_exhausted) return std::nullopt;
   if (!m_began) {
     m_began = true;
-    const auto [first, last] = partUnits(m_samples.size(), m_part, m_parts);
+    const auto [first, last] = partUnits(m_units, m_part, m_parts);
     if (first == last) markOwnWord();
   }
   if (const std::optional<std::size_t> own = takeFrom(m_part, false)) return own;

@@ -61,7 +61,7 @@ class SharedStretches : public UnitSource {
   // Brings this part's word to this round (its stretch is empty).
   void markOwnWord();
 
-  const std::vector<std::uint64_t>& m_samples;
+  std::size_t m_units;  // in the frame
   std::uint32_t m_part, m_parts;
   std::uint16_t m_round;
   CompareSwap m_swap;
