@@ -92,8 +92,8 @@ int devicesMain(const std::vector<std::string>& args) {
     std::printf("scene: %s, %dx%d at %d spp (jitter), %llu rays; median of %d renders, taking turns\n\n",
                 scene_path.c_str(), width, height, spp, static_cast<unsigned long long>(reference.stats.totalRays()),
                 repeats);
-    std::printf("%-4s %-40s %-6s %11s %12s %12s %10s\n", "", "device", "type", "solo Mr/s", "shared units",
-                "shared share", "busy ms");
+    std::printf("%-4s %-40s %-6s %11s %12s %12s %10s %9s\n", "", "device", "type", "solo Mr/s", "shared units",
+                "shared share", "busy ms", "film MiB");
     double sum = 0, best = 0;
     std::uint64_t samples = 0;
     for (const DeviceShare& s : last.stats.devices) samples += s.samples;
@@ -102,11 +102,12 @@ int devicesMain(const std::vector<std::string>& args) {
       sum += m;
       best = std::max(best, m);
       const DeviceShare& s = last.stats.devices[i];
-      std::printf("[%u]  %-40.40s %-6s %11.2f %12llu %11.1f%% %10.1f%s\n", devices[i].index,
+      std::printf("[%u]  %-40.40s %-6s %11.2f %12llu %11.1f%% %10.1f %9.1f%s\n", devices[i].index,
                   devices[i].name.c_str(),
                   devices[i].type & CL_DEVICE_TYPE_GPU ? "GPU" : devices[i].type & CL_DEVICE_TYPE_CPU ? "CPU" : "other", m,
                   static_cast<unsigned long long>(s.units), samples ? 100.0 * s.samples / samples : 0.0,
-                  1e3 * s.busy_seconds, s.failed ? "  (failed)" : "");
+                  1e3 * s.busy_seconds, static_cast<double>(s.film_bytes) / (1024.0 * 1024.0),
+                  s.failed ? "  (failed)" : "");
     }
     const double together = median(shared_mrays);
     // Bits are promised among devices of one kind; a GPU and a CPU round some

@@ -553,6 +553,9 @@ typedef struct PrismDeviceShare {
   uint32_t failed;
   const char* failure;
   const char* device;     /* its name; with frame parts, "part p: name" */
+  uint64_t film_bytes;    /* device memory its film took at its largest: the whole
+                             frame's on the device that resolves it, one unit's
+                             on the others (absent from structs sized before it) */
 } PrismDeviceShare;
 /* How many devices took part: the context's, and at part 0 of a frame shared
  * by processes (prismSetFrameParts) every part's, part by part. */

@@ -61,23 +61,24 @@ inline int firsthit_position_cell(__global const CameraGpu* camera, float x, flo
   return firsthit_cell((int)floor(clamp(x, 0.0f, (float)w - 1.0f)), (int)floor(clamp(y, 0.0f, (float)h - 1.0f)), w);
 }
 
-__kernel void firsthit_count_cells(__global const CameraGpu* camera, __global const float* xy, int first, int count,
+/* in_xy: where the batch's first position lies in xy. */
+__kernel void firsthit_count_cells(__global const CameraGpu* camera, __global const float* xy, int in_xy, int count,
                                    __global int* cell_count) {
   int k = get_global_id(0);
   if (k >= count) return;
-  atomic_inc(&cell_count[firsthit_position_cell(camera, xy[2 * (first + k)], xy[2 * (first + k) + 1])]);
+  atomic_inc(&cell_count[firsthit_position_cell(camera, xy[2 * (in_xy + k)], xy[2 * (in_xy + k) + 1])]);
 }
 
 /* Positions in any order: a counting sort. Within a cell the slots go in the
  * order the atomics come, which changes nothing: the raster's minimum does not
  * depend on order. cell_count comes back to zero (each sample takes a slot by
  * counting down), ready for the next batch. */
-__kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global const float* xy, int first, int count,
+__kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global const float* xy, int in_xy, int count,
                                     __global const int* cell_start, __global int* cell_count,
                                     __global float4* sorted, __global int* slot_of) {
   int k = get_global_id(0);
   if (k >= count) return;
-  float x = xy[2 * (first + k)], y = xy[2 * (first + k) + 1];
+  float x = xy[2 * (in_xy + k)], y = xy[2 * (in_xy + k) + 1];
   int cell = firsthit_position_cell(camera, x, y);
   int slot = cell_start[cell] + atomic_dec(&cell_count[cell]) - 1;
   float3 d = camera_ray_dir(camera, x, y);
@@ -132,13 +133,15 @@ inline int firsthit_pixel_slot(int width, int first, int spp, __global const int
 }
 
 /* One work-item per sample g = first + k of the image, its slot known from
- * its number alone (firsthit_pixel_slot), so nothing records it. */
-__kernel void firsthit_pixel_scatter(__global const CameraGpu* camera, __global const float* xy, int first, int count,
-                                     int spp, __global const int* cell_start, __global float4* sorted) {
+ * its number alone (firsthit_pixel_slot), so nothing records it. xy holds the
+ * positions from sample xy_first on (a window of the frame's, or all). */
+__kernel void firsthit_pixel_scatter(__global const CameraGpu* camera, __global const float* xy, int xy_first,
+                                     int first, int count, int spp, __global const int* cell_start,
+                                     __global float4* sorted) {
   int k = get_global_id(0);
   if (k >= count) return;
   int g = first + k;
-  float3 d = camera_ray_dir(camera, xy[2 * g], xy[2 * g + 1]);
+  float3 d = camera_ray_dir(camera, xy[2 * (g - xy_first)], xy[2 * (g - xy_first) + 1]);
   sorted[firsthit_pixel_slot(camera->width, first, spp, cell_start, g)] = (float4)(d.x, d.y, d.z, 0.0f);
 }
 

@@ -506,7 +506,8 @@ PRISM_API PrismStatus prismGetRenderDeviceShareCount(PrismContext context, uint3
 
 PRISM_API PrismStatus prismGetRenderDeviceShare(PrismContext context, uint32_t position, PrismDeviceShare* share) {
   PRISM_REQUIRE(context && share, "prismGetRenderDeviceShare: NULL argument");
-  PRISM_REQUIRE(share->struct_size >= sizeof(PrismDeviceShare),
+  // A struct from before film_bytes ends where film_bytes begins.
+  PRISM_REQUIRE(share->struct_size >= offsetof(PrismDeviceShare, film_bytes),
                 "prismGetRenderDeviceShare: share->struct_size is too small (set it to sizeof(PrismDeviceShare))");
   if (!context->has_render)
     return fail(PRISM_ERROR_INVALID_OPERATION, "prismGetRenderDeviceShare: no render yet");
@@ -521,6 +522,8 @@ PRISM_API PrismStatus prismGetRenderDeviceShare(PrismContext context, uint32_t p
   share->failed = d.failed ? 1 : 0;
   share->failure = d.failure.c_str();
   share->device = d.device.c_str();
+  if (share->struct_size >= offsetof(PrismDeviceShare, film_bytes) + sizeof share->film_bytes)
+    share->film_bytes = d.film_bytes;
   return PRISM_OK;
 }
 

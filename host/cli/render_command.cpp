@@ -262,14 +262,15 @@ void printStageTimes(PrismContext context, const PrismRenderStats& stats) {
 void printDeviceShares(PrismContext context) {
   uint32_t count = 0;
   if (prismGetRenderDeviceShareCount(context, &count) != PRISM_OK || count < 2) return;
-  std::printf("  %-40s %8s %12s %10s\n", "device", "units", "samples", "busy s");
+  std::printf("  %-40s %8s %12s %10s %10s\n", "device", "units", "samples", "busy s", "film MiB");
   for (uint32_t i = 0; i < count; ++i) {
     PrismDeviceShare share{};
     share.struct_size = sizeof share;
     if (prismGetRenderDeviceShare(context, i, &share) != PRISM_OK) return;
-    std::printf("  [%u] %-36.36s %8llu %12llu %10.3f%s\n", i, share.device,
+    std::printf("  [%u] %-36.36s %8llu %12llu %10.3f %10.1f%s\n", i, share.device,
                 static_cast<unsigned long long>(share.units), static_cast<unsigned long long>(share.samples),
-                share.busy_seconds, share.failed ? "  (failed)" : "");
+                share.busy_seconds, static_cast<double>(share.film_bytes) / (1024.0 * 1024.0),
+                share.failed ? "  (failed)" : "");
   }
 }
 

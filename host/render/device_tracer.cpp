@@ -72,6 +72,7 @@ void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats, bool mark_a
   m_scene = &gpu;
   m_options = &options;
   m_sampling = frame.sampling;
+  m_film_peak_bytes = 0;  // this frame's
   m_stats = &stats;
   m_zbuffer = frame.zbuffer;
   m_distributed_camera = frame.distributed_camera;
@@ -165,15 +166,18 @@ void DeviceTracer::unload() {
   // The per-sample film can be large: give it back now rather than at the next render.
   m_film = Buffer();
   m_sample_xy = Buffer();
+  m_film_first = m_film_size = m_film_total = 0;
+  m_film_peak_bytes = 0;
   m_zbuffer_xy = Buffer();
   m_scene = nullptr;
   m_options = nullptr;
   m_stats = nullptr;
 }
 
-void DeviceTracer::beginSampleFilm(std::uint64_t total) {
+void DeviceTracer::beginSampleFilm(std::uint64_t total, std::uint64_t window) {
   const RenderOptions& opt = *m_options;
-  checkFilmFits(total, true);
+  const std::uint64_t size = window > 0 ? std::min(window, total) : total;
+  checkFilmFits(size, true, total);
   std::vector<float> tile_xy(2, 0.0f);  // a buffer may not be empty
   if (m_sampling.mode == AaMode::Poisson) tile_xy = poissonTile(m_sampling.spp, opt.seed).xy;
   m_tile = Buffer(m_context, tile_xy.size() * sizeof(float));
@@ -183,8 +187,32 @@ void DeviceTracer::beginSampleFilm(std::uint64_t total) {
   // Not zeroed here: each unit zeroes its own samples (traceSamples), so a device
   // sharing the frame touches only the part it traces. Zeroing a whole 16 spp
   // frame's film cost a PoCL CPU beside a GPU 30 ms in its first unit.
-  m_film = Buffer(m_context, total * kFilmBytesPerSample);
-  m_sample_xy = Buffer(m_context, total * kPositionBytesPerSample);
+  m_film = Buffer(m_context, size * kFilmBytesPerSample);
+  m_sample_xy = Buffer(m_context, size * kPositionBytesPerSample);
+  m_film_first = 0;
+  m_film_size = size;
+  m_film_total = total;
+  m_film_peak_bytes = std::max(m_film_peak_bytes, filmBytes());
+}
+
+void DeviceTracer::holdSamples(std::uint64_t first, std::uint64_t n) {
+  if (first > m_film_total || n > m_film_total - first) throw std::logic_error("holdSamples: past the frame's samples");
+  if (n > m_film_size) {
+    checkFilmFits(n, true, m_film_total);
+    m_film = Buffer();
+    m_sample_xy = Buffer();
+    m_film_size = 0;  // until both are made
+    m_film = Buffer(m_context, n * kFilmBytesPerSample);
+    m_sample_xy = Buffer(m_context, n * kPositionBytesPerSample);
+    m_film_size = n;
+    m_film_peak_bytes = std::max(m_film_peak_bytes, filmBytes());
+  }
+  m_film_first = first;
+}
+
+void DeviceTracer::requireHeld(std::uint64_t first, std::uint64_t n, const char* what) const {
+  if (first < m_film_first || n > m_film_size || first - m_film_first > m_film_size - n)
+    throw std::logic_error(std::string(what) + ": samples the film does not hold");
 }
 
 void DeviceTracer::samplePositions(std::uint64_t first, size_t n) {
@@ -201,20 +229,24 @@ void DeviceTracer::samplePositions(std::uint64_t first, size_t n) {
       .arg(m_chunk_xy)
       .arg(m_chunk_aov)
       .run(n);
-  m_chunk_xy.copyTo(m_sample_xy, n * kPositionBytesPerSample, 0, first * kPositionBytesPerSample);
+  m_chunk_xy.copyTo(m_sample_xy, n * kPositionBytesPerSample, 0, (first - m_film_first) * kPositionBytesPerSample);
 }
 
 void DeviceTracer::traceSamples(std::uint64_t first_sample, std::uint64_t end,
                                 const std::function<void(std::uint64_t)>& done) {
+  if (end < first_sample || end - first_sample > m_film_size)
+    throw std::logic_error("traceSamples: more samples than the film's window holds");
+  // A window moves to the unit; a film of the whole frame holds it already.
+  if (first_sample < m_film_first || end - m_film_first > m_film_size) holdSamples(first_sample, end - first_sample);
   zeroFill(m_film, static_cast<size_t>(end - first_sample) * kFilmBytesPerSample,
-           static_cast<size_t>(first_sample) * kFilmBytesPerSample);
+           static_cast<size_t>(first_sample - m_film_first) * kFilmBytesPerSample);
   // The Z-buffer takes its batch of samples at once: their positions first,
   // rasterised together, then resolved chunk by chunk.
   if (m_zbuffer) {
     for (std::uint64_t first = first_sample; first < end; first += kSliceRays)
       samplePositions(first, static_cast<size_t>(std::min<std::uint64_t>(kSliceRays, end - first)));
     // Per-pixel modes number their samples pixel by pixel: no sort needed.
-    m_firsthit->rasterize(m_geometry, m_sample_xy, static_cast<size_t>(first_sample),
+    m_firsthit->rasterize(m_geometry, m_sample_xy, static_cast<size_t>(m_film_first), static_cast<size_t>(first_sample),
                           static_cast<size_t>(end - first_sample),
                           m_sampling.mode == AaMode::Quincunx ? 0 : m_sampling.spp);
   }
@@ -238,6 +270,19 @@ std::vector<float> DeviceTracer::resolvePixels(size_t first_pixel, size_t count)
   const size_t pixels = static_cast<size_t>(opt.width) * opt.height;
   if (first_pixel > pixels || count > pixels - first_pixel) throw std::logic_error("resolvePixels: past the frame");
   if (count == 0) return {};
+  // The samples those pixels reach: every one in quincunx mode (its corners are
+  // numbered row by row before the centres); else those of the pixels within the
+  // filter's reach rows and columns, all within reach * (width + 1) pixels.
+  const std::uint64_t spp = static_cast<std::uint64_t>(m_sampling.spp);
+  if (m_sampling.mode == AaMode::Quincunx) {
+    requireHeld(0, m_film_total, "resolvePixels");
+  } else {
+    const std::uint64_t reach = static_cast<std::uint64_t>(filterReach(m_sampling.effectiveFilter())) *
+                                (static_cast<std::uint64_t>(opt.width) + 1);
+    const std::uint64_t lo = first_pixel > reach ? first_pixel - reach : 0;
+    const std::uint64_t hi = std::min<std::uint64_t>(pixels, first_pixel + count + reach);
+    requireHeld(lo * spp, (hi - lo) * spp, "resolvePixels");
+  }
   m_pixels.reserve(m_context, pixels * 4 * sizeof(float));
   m_context.launch(m_resolve)
       .arg(static_cast<cl_int>(m_sampling.mode))
@@ -247,6 +292,7 @@ std::vector<float> DeviceTracer::resolvePixels(size_t first_pixel, size_t count)
       .arg(static_cast<cl_int>(m_sampling.spp))
       .arg(m_sample_xy)
       .arg(m_film)
+      .arg(static_cast<cl_int>(m_film_first))
       .arg(static_cast<cl_int>(first_pixel))
       .arg(static_cast<cl_int>(count))
       .arg(m_pixels)
@@ -257,13 +303,15 @@ std::vector<float> DeviceTracer::resolvePixels(size_t first_pixel, size_t count)
 }
 
 void DeviceTracer::readSamples(std::uint64_t first, size_t n, float* rgba, float* xy) const {
-  m_film.read(rgba, n * kFilmBytesPerSample, first * kFilmBytesPerSample);
-  m_sample_xy.read(xy, n * kPositionBytesPerSample, first * kPositionBytesPerSample);
+  requireHeld(first, n, "readSamples");
+  m_film.read(rgba, n * kFilmBytesPerSample, (first - m_film_first) * kFilmBytesPerSample);
+  m_sample_xy.read(xy, n * kPositionBytesPerSample, (first - m_film_first) * kPositionBytesPerSample);
 }
 
 void DeviceTracer::writeSamples(std::uint64_t first, size_t n, const float* rgba, const float* xy) {
-  m_film.write(rgba, n * kFilmBytesPerSample, first * kFilmBytesPerSample);
-  m_sample_xy.write(xy, n * kPositionBytesPerSample, first * kPositionBytesPerSample);
+  requireHeld(first, n, "writeSamples");
+  m_film.write(rgba, n * kFilmBytesPerSample, (first - m_film_first) * kFilmBytesPerSample);
+  m_sample_xy.write(xy, n * kPositionBytesPerSample, (first - m_film_first) * kPositionBytesPerSample);
 }
 
 std::vector<float> DeviceTracer::traceFilmPositions(const std::vector<float>& xy,
@@ -276,9 +324,13 @@ std::vector<float> DeviceTracer::traceFilmPositions(const std::vector<float>& xy
   // The colours come back to the host, so the device film need only hold one batch
   // (a whole number of slices; the key is the position's index in its batch).
   const size_t batch = std::min(n, m_film_batch_slices * kSliceRays);
-  checkFilmFits(batch, false);
+  checkFilmFits(batch, false, batch);
   m_film = Buffer();
   m_film = Buffer(m_context, batch * kFilmBytesPerSample);
+  m_film_first = 0;  // keys count from the batch's first position
+  m_film_size = batch;
+  m_film_total = 0;
+  m_film_peak_bytes = std::max(m_film_peak_bytes, filmBytes());
   std::vector<float> rgba(4 * n);
   for (size_t begin = 0; begin < n; begin += batch) {
     const size_t count = std::min(batch, n - begin);
@@ -293,7 +345,7 @@ std::vector<float> DeviceTracer::traceFilmPositions(const std::vector<float>& xy
         const size_t z = std::min<size_t>(kZBufferBatch, count - first);
         m_zbuffer_xy.reserve(m_context, z * kPositionBytesPerSample);
         m_zbuffer_xy.write(xy.data() + 2 * (begin + first), z * kPositionBytesPerSample);
-        m_firsthit->rasterize(m_geometry, m_zbuffer_xy, 0, z);
+        m_firsthit->rasterize(m_geometry, m_zbuffer_xy, 0, 0, z);
       }
       m_zbuffer_first = first % kZBufferBatch;
       m_chunk_xy.write(xy.data() + 2 * (begin + first), m * kPositionBytesPerSample);
@@ -459,6 +511,7 @@ void DeviceTracer::accumulate(const Buffer& contributions, size_t count, const B
       .arg(contributions)
       .arg(static_cast<int>(count))
       .arg(m_film)
+      .arg(static_cast<cl_int>(m_film_first))
       .arg(m_first_bad)
       .run(count);
   if (!m_options->check_nan || m_stats->nan) return;
@@ -497,7 +550,7 @@ void DeviceTracer::zeroFill(Buffer& buffer, size_t bytes, size_t offset) {
   buffer.fill(&zero, sizeof zero, bytes, offset);
 }
 
-void DeviceTracer::checkFilmFits(std::uint64_t samples, bool with_positions) const {
+void DeviceTracer::checkFilmFits(std::uint64_t samples, bool with_positions, std::uint64_t keys) const {
   const RenderOptions& opt = *m_options;
   const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * opt.height;
   const DeviceDescription& device = m_context.device();
@@ -515,13 +568,20 @@ void DeviceTracer::checkFilmFits(std::uint64_t samples, bool with_positions) con
     other += m_firsthit->deviceBytes() + std::min<std::uint64_t>(kZBufferBatch, samples) * kZBufferBytesPerSample;
 
   const std::uint64_t per_sample = kFilmBytesPerSample + (with_positions ? kPositionBytesPerSample : 0);
-  const std::uint64_t max_key = static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
-  std::uint64_t fit = std::min<std::uint64_t>(max_key, max_alloc / kFilmBytesPerSample);
+  const std::uint64_t max_keys = static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());
+  std::uint64_t fit = max_alloc / kFilmBytesPerSample;
   fit = std::min<std::uint64_t>(fit, global > other ? (global - other) / per_sample : 0);
-  if (samples <= fit) return;
+  if (samples <= fit && keys <= max_keys) return;
+  if (samples <= fit)
+    throw FilmTooLarge("the frame has " + std::to_string(keys) +
+                       " samples, but a film key must stay under 2^31; use fewer samples per pixel (at most " +
+                       std::to_string(max_keys / std::max<std::uint64_t>(1, pixels)) + " at " +
+                       std::to_string(opt.width) + "x" + std::to_string(opt.height) + ") or a smaller image");
   std::string advice;
-  const std::uint64_t per_pixel = fit / std::max<std::uint64_t>(1, pixels);
-  if (with_positions && m_options->spp > 1 && per_pixel >= 1)
+  const std::uint64_t per_pixel = std::min(fit, max_keys) / std::max<std::uint64_t>(1, pixels);
+  if (samples < keys)  // a window of one unit: fewer samples per pixel would not shrink it
+    advice = "the device holds one unit of the frame at a time, so only a smaller scene or leaving it out helps";
+  else if (with_positions && m_options->spp > 1 && per_pixel >= 1)
     advice = "use fewer samples per pixel (at most " + std::to_string(per_pixel) + " at " + std::to_string(opt.width) +
              "x" + std::to_string(opt.height) + ") or a smaller image";
   else
@@ -530,7 +590,8 @@ void DeviceTracer::checkFilmFits(std::uint64_t samples, bool with_positions) con
                      " bytes each (" + gib(static_cast<double>(samples) * per_sample) + ") but device '" +
                      device.name + "' takes at most " + gib(static_cast<double>(max_alloc)) + " in one buffer, " +
                      gib(static_cast<double>(global)) + " in all (" + gib(static_cast<double>(other)) +
-                     " already used by this render), and a film index must stay under 2^31; " + advice);
+                     " already used by this render)" +
+                     (keys > max_keys ? ", and a film key must stay under 2^31" : "") + "; " + advice);
 }
 
 }  // namespace prism

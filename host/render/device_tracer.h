@@ -75,20 +75,34 @@ class DeviceTracer {
   // Lets go of the per-sample film and the scene's reference (keeps the kernels).
   void unload();
 
-  // The kernel-generated sampling modes (not adaptive): a film for all `total`
-  // samples of the frame, with their positions (not zeroed: see traceSamples).
-  void beginSampleFilm(std::uint64_t total);
+  // The kernel-generated sampling modes (not adaptive): a film for the frame's
+  // `total` samples with their positions (not zeroed: see traceSamples). It
+  // holds all of them (window 0: the device that resolves the frame), or a
+  // window of `window` samples that traceSamples moves to each unit it traces:
+  // a device whose units leave it as they end holds one unit, not the frame.
+  void beginSampleFilm(std::uint64_t total, std::uint64_t window = 0);
+  // Whether the film holds a window of the frame's samples, not all of them.
+  bool filmWindowed() const { return m_film_size < m_film_total; }
+  // Device bytes the film takes now (entries and positions), and the most it
+  // took since the last unload.
+  std::uint64_t filmBytes() const { return m_film.bytes() + m_sample_xy.bytes(); }
+  std::uint64_t filmPeakBytes() const { return m_film_peak_bytes; }
+  // Moves the film's window over samples [first, first + n), made larger first
+  // if it must be (what it held is then lost): where a run of samples is
+  // written in to be resolved. [0, total) makes it hold the whole frame.
+  void holdSamples(std::uint64_t first, std::uint64_t n);
   // Traces samples [first, end) of the sequence (with the Z-buffer, at most one
-  // of its batches): their film entries zeroed, then their light added in;
-  // done(key) after each chunk, with the key that chunk ends at.
+  // of its batches; at most the window's size): their film entries zeroed, then
+  // their light added in; done(key) after each chunk, with the key that chunk ends at.
   void traceSamples(std::uint64_t first, std::uint64_t end, const std::function<void(std::uint64_t)>& done);
   // The film filtered into pixels (rgba): all of them, or pixels
-  // [first_pixel, first_pixel + count) in row-major order.
+  // [first_pixel, first_pixel + count) in row-major order (the film must hold
+  // every sample they reach).
   std::vector<float> resolvePixels();
   std::vector<float> resolvePixels(size_t first_pixel, size_t count);
   // The film entries (rgba) and positions (x, y) of samples [first, first + n),
-  // read from this device or written into its film (to gather a frame that
-  // several devices traced on the one that resolves it).
+  // which the film must hold, read from this device or written into its film
+  // (to gather a frame that several devices traced on the one that resolves it).
   void readSamples(std::uint64_t first, size_t n, float* rgba, float* xy) const;
   void writeSamples(std::uint64_t first, size_t n, const float* rgba, const float* xy);
 
@@ -132,8 +146,11 @@ class DeviceTracer {
   // not finite is recorded with its ray (from `rays`) and hit (`hits`, or none).
   void accumulate(const Buffer& contributions, size_t count, const Buffer& rays, const Buffer* hits);
   // Throws FilmTooLarge unless `samples` per-sample film entries (and their
-  // positions when `with_positions`) fit the device beside everything else.
-  void checkFilmFits(std::uint64_t samples, bool with_positions) const;
+  // positions when `with_positions`) fit the device beside everything else,
+  // and keys up to `keys` fit the kernels' int.
+  void checkFilmFits(std::uint64_t samples, bool with_positions, std::uint64_t keys) const;
+  // Throws std::logic_error unless the film holds samples [first, first + n).
+  void requireHeld(std::uint64_t first, std::uint64_t n, const char* what) const;
   void zeroFill(Buffer& buffer, size_t bytes, size_t offset = 0);
 
   Context& m_context;
@@ -163,8 +180,12 @@ class DeviceTracer {
   int m_light_buffer_resolution = 1;
   Buffer m_texels;  // image textures (GpuScene::texels)
   Buffer m_camera, m_materials, m_lights, m_aov_depth, m_aov_normal, m_aov_primid, m_aov_albedo;
-  Buffer m_film;       // rgba per primary sample, indexed by the sample's key
-  Buffer m_sample_xy;  // film positions of all samples (for resolve)
+  Buffer m_film;       // rgba per primary sample, indexed by the sample's key less m_film_first
+  Buffer m_sample_xy;  // film positions of the same samples (for resolve)
+  std::uint64_t m_film_first = 0;  // the key of the film's first entry
+  std::uint64_t m_film_size = 0;   // the entries it holds (its window's size)
+  std::uint64_t m_film_total = 0;  // the frame's samples (0: adaptive batches, keys from 0)
+  std::uint64_t m_film_peak_bytes = 0;
   Buffer m_zbuffer_xy;  // adaptive sampling: the positions of the Z-buffer's batch
   size_t m_zbuffer_first = 0;  // the chunk's first sample within the Z-buffer's batch
   Buffer m_chunk_xy, m_chunk_aov, m_tile, m_pixels;

@@ -85,12 +85,15 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_stats.wide_atomics = m_wide;
 }
 
-void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, size_t first, size_t count, int pixel_spp) {
+void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, size_t xy_first, size_t first,
+                             size_t count, int pixel_spp) {
   if (!m_raster) throw std::logic_error("FirstHitPass::rasterize before prepare");
   if (count == 0) return;
   if (first + count > static_cast<size_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::invalid_argument("first hit zbuffer: more than 2^31 - 1 positions in one batch");
+  if (xy_first > first) throw std::logic_error("FirstHitPass::rasterize: positions before the buffer's first");
   const cl_int n = static_cast<cl_int>(count), at = static_cast<cl_int>(first);
+  const cl_int in_xy = static_cast<cl_int>(first - xy_first);  // the batch's first position in xy
   const size_t cells = cellCount();
 
   // The samples in cell order (kernels/firsthit.cl).
@@ -123,6 +126,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
     m_context.launch(m_pixel_scatter)
         .arg(m_camera)
         .arg(xy)
+        .arg(static_cast<cl_int>(xy_first))
         .arg(at)
         .arg(n)
         .arg(static_cast<cl_int>(pixel_spp))
@@ -130,12 +134,12 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(m_sorted)
         .run(count);
   } else {
-    m_context.launch(m_count_cells).arg(m_camera).arg(xy).arg(at).arg(n).arg(m_cell_count).run(count);
+    m_context.launch(m_count_cells).arg(m_camera).arg(xy).arg(in_xy).arg(n).arg(m_cell_count).run(count);
     m_scan.exclusive(m_cell_count, cells, m_cell_start);
     m_context.launch(m_sort_samples)
         .arg(m_camera)
         .arg(xy)
-        .arg(at)
+        .arg(in_xy)
         .arg(n)
         .arg(m_cell_start)
         .arg(m_cell_count)
@@ -212,7 +216,7 @@ size_t FirstHitPass::cellCount() const {
 }
 
 void FirstHitPass::run(const GeometryBuffers& geometry, const Buffer& xy, size_t count, Buffer& hits, int pixel_spp) {
-  rasterize(geometry, xy, 0, count, pixel_spp);
+  rasterize(geometry, xy, 0, 0, count, pixel_spp);
   resolve(geometry, 0, count, hits);
 }
 

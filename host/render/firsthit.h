@@ -43,12 +43,14 @@ class FirstHitPass {
   // primitive_options: primitiveKernelOptions of the scene (the structure's
   // build has them: DeviceAccel::primitive_options).
   void prepare(const GpuScene& scene, const std::string& primitive_options);
-  // The depth + id entries of the `count` positions xy[2k], xy[2k+1] for k in
-  // [first, first + count) (film coordinates in [0, W] x [0, H]) of the
-  // scene whose geometry is uploaded in `geometry`. Replaces the last batch. pixel_spp > 0 says the
+  // The depth + id entries of the `count` positions k in [first, first + count)
+  // (film coordinates in [0, W] x [0, H]) of the scene whose geometry is
+  // uploaded in `geometry`; `xy` holds the positions from number xy_first on
+  // (position k at xy[2 (k - xy_first)]). Replaces the last batch. pixel_spp > 0 says the
   // positions are in pixel order, pixel_spp to a pixel (position k in pixel
   // k / pixel_spp, row by row), which spares sorting them; 0: any order.
-  void rasterize(const GeometryBuffers& geometry, const Buffer& xy, std::size_t first, std::size_t count, int pixel_spp = 0);
+  void rasterize(const GeometryBuffers& geometry, const Buffer& xy, std::size_t xy_first, std::size_t first,
+                 std::size_t count, int pixel_spp = 0);
   // hits[k] for positions first + k, k < count, of the last batch.
   void resolve(const GeometryBuffers& geometry, std::size_t first, std::size_t count, Buffer& hits);
   // rasterize, then resolve the whole batch.

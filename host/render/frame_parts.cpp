@@ -167,6 +167,7 @@ void packShares(ByteWriter& out, const RenderStats& stats) {
     out.put(d.units);
     out.put(d.samples);
     out.put(d.busy_seconds);
+    out.put(d.film_bytes);
     out.put<std::uint8_t>(d.failed);
     out.putString(d.failure);
   }
@@ -183,6 +184,7 @@ void unpackShares(ByteReader& in, std::uint32_t part, RenderStats& stats) {
     d.units = in.get<std::uint64_t>();
     d.samples = in.get<std::uint64_t>();
     d.busy_seconds = in.get<double>();
+    d.film_bytes = in.get<std::uint64_t>();
     d.failed = in.get<std::uint8_t>() != 0;
     d.failure = in.getString();
     stats.devices.push_back(std::move(d));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <string>
 
 #include "kernels/shared/ray_gpu.h"
@@ -26,6 +27,58 @@ struct SampleRun {
 };
 
 }  // namespace
+
+// The film entries of the units that devices handed over as they finished
+// them (every device but the one that resolves the frame holds a window of one
+// unit): on the host until the resolver's thread writes them into its film
+// between its own units, or, at a part other than 0, until their run is resolved.
+class Renderer::HeldUnits {
+ public:
+  HeldUnits(std::uint64_t unit_size, size_t units) : m_unit_size(unit_size), m_units(units) {}
+  // Unit u's entries, from the film of the tracer that just traced it (on that device's thread).
+  void take(size_t u, std::uint64_t samples, const DeviceTracer& tracer) {
+    SampleRun run;
+    run.resize(static_cast<size_t>(samples));
+    tracer.readSamples(u * m_unit_size, run.size(), run.rgba.data(), run.xy.data());
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_units[u] = std::move(run);
+    m_waiting.push_back(u);
+  }
+  // The units taken since the last call, let go here (any thread).
+  std::vector<std::pair<size_t, SampleRun>> takeWaiting() {
+    std::vector<std::pair<size_t, SampleRun>> out;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    for (size_t u : m_waiting)
+      if (m_units[u].size() > 0) out.emplace_back(u, std::move(m_units[u]));
+    m_waiting.clear();
+    for (auto& [u, run] : out) m_units[u] = SampleRun();
+    return out;
+  }
+  // Writes them into the tracer's film (which must hold their samples).
+  void write(std::vector<std::pair<size_t, SampleRun>>& units, DeviceTracer& tracer) const {
+    for (auto& [u, run] : units) tracer.writeSamples(u * m_unit_size, run.size(), run.rgba.data(), run.xy.data());
+  }
+  // After the deal (no device thread left): whether unit u is here, and samples
+  // [first, end), all in held units, into rgba (4 a sample) and xy (2).
+  bool holds(size_t u) const { return m_units[u].size() > 0; }
+  void copy(std::uint64_t first, std::uint64_t end, float* rgba, float* xy) const {
+    for (std::uint64_t k = first; k < end;) {
+      const SampleRun& run = m_units.at(static_cast<size_t>(k / m_unit_size));
+      const std::uint64_t at = k % m_unit_size;
+      if (at >= run.size()) throw std::logic_error("HeldUnits::copy: a sample no unit holds");
+      const std::uint64_t n = std::min<std::uint64_t>(end - k, run.size() - at);
+      std::copy_n(run.rgba.begin() + 4 * at, 4 * n, rgba + 4 * (k - first));
+      std::copy_n(run.xy.begin() + 2 * at, 2 * n, xy + 2 * (k - first));
+      k += n;
+    }
+  }
+
+ private:
+  std::uint64_t m_unit_size;
+  std::mutex m_mutex;
+  std::vector<SampleRun> m_units;
+  std::vector<size_t> m_waiting;  // taken, not yet let go (a unit traced again comes twice)
+};
 
 Renderer::Renderer(Context& context) : Renderer(std::vector<Context*>{&context}) {}
 
@@ -139,6 +192,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
   stats.rays_per_pixel = static_cast<double>(stats.rays_by_kind[RAY_KIND_PRIMARY]) / static_cast<double>(pixels);
   if (sampling.mode != AaMode::Adaptive) gatherAovs(result);  // adaptive: after its first pass
   if (m_parts.part != 0) result.rgba.assign(4 * pixels, 0.f);  // the image is part 0's
+  for (size_t i = 0; i < m_tracers.size(); ++i) stats.devices[i].film_bytes = m_tracers[i]->filmPeakBytes();
   for (auto& t : m_tracers) t->unload();
   if (m_parts.shared()) {
     // Part 0 reports every part's devices and warnings.
@@ -250,6 +304,27 @@ void Renderer::injectDeviceFault(size_t device, std::uint64_t unit) {
   m_faults.emplace_back(device, unit);
 }
 
+size_t Renderer::holdWholeFilm(const RenderStats& stats, const std::function<void(DeviceTracer&)>& hold) {
+  std::exception_ptr refused;
+  for (size_t i = 0; i < m_tracers.size(); ++i) {
+    if (stats.devices[i].failed) continue;
+    try {
+      hold(*m_tracers[i]);
+      return i;
+    } catch (const FilmTooLarge&) {
+      if (!refused) refused = std::current_exception();
+    }
+  }
+  if (refused) std::rethrow_exception(refused);
+  throw DeviceError("no device is left to resolve the frame");
+}
+
+size_t Renderer::deviceIndex(const DeviceTracer& tracer) const {
+  for (size_t i = 0; i < m_tracers.size(); ++i)
+    if (m_tracers[i].get() == &tracer) return i;
+  throw std::logic_error("Renderer::deviceIndex: not this renderer's tracer");
+}
+
 size_t Renderer::survivor(const RenderStats& stats) const {
   for (size_t i = 0; i < stats.devices.size(); ++i)
     if (!stats.devices[i].failed) return i;
@@ -336,13 +411,25 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
                              const ProgressFn& progress) {
   const std::uint64_t total = sampleCount(sampling.mode, opt.width, opt.height, sampling.spp);
   const bool several = unitsOfSlices();
-  for (size_t i = 0; i < m_tracers.size(); ++i)
-    if (!result.stats.devices[i].failed) m_tracers[i]->beginSampleFilm(total);
   // Units: a slice (one chunk), or the Z-buffer's batch, which it rasterises at once.
   const std::uint64_t unit_size =
       result.stats.first_hit == FirstHitMode::ZBuffer ? DeviceTracer::kZBufferBatch : DeviceTracer::kSliceRays;
   std::vector<std::uint64_t> unit_samples;
   for (std::uint64_t first = 0; first < total; first += unit_size) unit_samples.push_back(std::min(unit_size, total - first));
+  // The device that resolves the frame (at part 0: the first whose memory holds
+  // it) holds the whole film. Every other holds a window of one unit and hands
+  // each unit to the host as it ends, on its own thread; the resolver's thread
+  // writes them into its film between its own units. A device need not hold
+  // the frame to share it. A part other than 0 resolves its runs piece by
+  // piece after the deal, so none of its devices holds the frame.
+  const size_t resolver =
+      m_parts.part == 0 ? holdWholeFilm(result.stats, [&](DeviceTracer& t) { t.beginSampleFilm(total); })
+                        : m_tracers.size();
+  const auto hands_over = [&](size_t d) { return d != resolver; };
+  for (size_t i = 0; i < m_tracers.size(); ++i)
+    if (!result.stats.devices[i].failed && hands_over(i)) m_tracers[i]->beginSampleFilm(total, unit_size);
+  HeldUnits held(unit_size, unit_samples.size());
+  std::vector<char> gathered(unit_samples.size(), 0);  // written into the resolver's film by its thread
   const DealtUnits dealt = deal(
       unit_samples,
       [&](DeviceTracer& tracer, size_t u) {
@@ -351,28 +438,49 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
           if (!several && progress && !progress(static_cast<double>(done) / static_cast<double>(total)))
             throw RenderCancelled();
         });
+        if (hands_over(deviceIndex(tracer))) {
+          held.take(u, unit_samples[u], tracer);
+        } else {
+          auto waiting = held.takeWaiting();
+          for (const auto& unit : waiting) gathered[unit.first] = 1;  // before the writes, which may fail
+          held.write(waiting, tracer);
+        }
       },
       result, progress);
-  // The units this process's other devices traced go to the one that resolves
-  // (the survivor).
-  DeviceTracer& resolving = *m_tracers[survivor(result.stats)];
-  SampleRun run;
-  const std::vector<size_t>& owner = dealt.owner;
-  for (size_t u = 0; u < owner.size(); ++u) {
-    if (owner[u] == kNoDevice || m_tracers[owner[u]].get() == &resolving) continue;
-    run.resize(static_cast<size_t>(unit_samples[u]));
-    m_tracers[owner[u]]->readSamples(u * unit_size, run.size(), run.rgba.data(), run.xy.data());
-    resolving.writeSamples(u * unit_size, run.size(), run.rgba.data(), run.xy.data());
+  if (m_parts.part != 0) {
+    resolveAcrossParts(sampling, opt, dealt.part_of, unit_size, held, *m_tracers[survivor(result.stats)], result);
+    return;
   }
+  // The resolver, unless it failed: then the first device left that can takes
+  // the whole film (its own units were all handed over), and the units the
+  // failed one had gathered from the others are traced again on it.
+  size_t resolving_device = resolver;
+  std::vector<size_t> lost;
+  if (result.stats.devices[resolver].failed) {
+    resolving_device = holdWholeFilm(result.stats, [&](DeviceTracer& t) { t.holdSamples(0, total); });
+    for (size_t u = 0; u < dealt.owner.size(); ++u)
+      if (dealt.owner[u] != kNoDevice && gathered[u] && !held.holds(u)) lost.push_back(u);
+  }
+  DeviceTracer& resolving = *m_tracers[resolving_device];
+  auto waiting = held.takeWaiting();
+  held.write(waiting, resolving);
+  waiting.clear();
+  // (Its ray counts were counted when the unit was first traced.)
+  for (size_t u : lost) resolving.traceSamples(u * unit_size, u * unit_size + unit_samples[u], {});
+  if (!lost.empty())
+    result.stats.warnings.push_back("device '" + result.stats.devices[resolver].device +
+                                    "', which was to resolve the frame, failed holding " + std::to_string(lost.size()) +
+                                    " units the others had traced; they were traced again on '" +
+                                    result.stats.devices[resolving_device].device + "'");
   if (m_parts.shared())
-    resolveAcrossParts(sampling, opt, dealt.part_of, unit_size, resolving, result);
+    resolveAcrossParts(sampling, opt, dealt.part_of, unit_size, held, resolving, result);
   else
     result.rgba = resolving.resolvePixels();
 }
 
 void Renderer::resolveAcrossParts(const SamplingOptions& sampling, const RenderOptions& opt,
                                   const std::vector<std::uint32_t>& part_of, std::uint64_t unit_size,
-                                  DeviceTracer& resolving, RenderResult& result) {
+                                  HeldUnits& held, DeviceTracer& resolving, RenderResult& result) {
   // Part 0 resolves the frame; each other part sends it, for each run of
   // consecutive units it traced, the pixels it can resolve alone and the
   // samples part 0 needs for the rest (render/part_resolve.h), or, in quincunx
@@ -380,8 +488,7 @@ void Renderer::resolveAcrossParts(const SamplingOptions& sampling, const RenderO
   const std::uint64_t total = sampleCount(sampling.mode, opt.width, opt.height, sampling.spp);
   const std::uint64_t pixels = static_cast<std::uint64_t>(opt.width) * static_cast<std::uint64_t>(opt.height);
   // As the resolve kernel reaches: ceil(r - 1/2) rows and columns, in float.
-  const auto reach_rows =
-      static_cast<std::uint64_t>(std::ceil(static_cast<float>(filterRadius(sampling.effectiveFilter())) - 0.5f));
+  const auto reach_rows = static_cast<std::uint64_t>(filterReach(sampling.effectiveFilter()));
   const auto partOf = [&](std::uint32_t p) {
     std::vector<PartResolve> runs;
     for (const auto& [first_unit, last_unit] : unitRuns(part_of, p)) {
@@ -401,15 +508,26 @@ void Renderer::resolveAcrossParts(const SamplingOptions& sampling, const RenderO
   SampleRun run;
   ByteWriter out;
   if (m_parts.part != 0) {
+    // Its devices handed every unit over. The pixels it resolves go through the
+    // resolver's window a piece at a time, each piece with the samples its
+    // pixels reach (all inside the run: partResolve), so no device holds a run.
+    const std::uint64_t spp = static_cast<std::uint64_t>(sampling.spp);
+    const std::uint64_t reach_pixels = reach_rows * (static_cast<std::uint64_t>(opt.width) + 1);
+    const std::uint64_t piece = std::max<std::uint64_t>(1, m_resolve_piece_samples / spp);  // pixels
     for (const PartResolve& mine : partOf(m_parts.part)) {
-      if (mine.end_pixel > mine.first_pixel) {
-        const std::vector<float> own = resolving.resolvePixels(static_cast<size_t>(mine.first_pixel),
-                                                               static_cast<size_t>(mine.end_pixel - mine.first_pixel));
+      for (std::uint64_t a = mine.first_pixel; a < mine.end_pixel; a += piece) {
+        const std::uint64_t b = std::min(mine.end_pixel, a + piece);
+        const std::uint64_t lo = (a - reach_pixels) * spp, hi = (b + reach_pixels) * spp;
+        run.resize(static_cast<size_t>(hi - lo));
+        held.copy(lo, hi, run.rgba.data(), run.xy.data());
+        resolving.holdSamples(lo, hi - lo);
+        resolving.writeSamples(lo, run.size(), run.rgba.data(), run.xy.data());
+        const std::vector<float> own = resolving.resolvePixels(static_cast<size_t>(a), static_cast<size_t>(b - a));
         out.putArray(own.data(), own.size());
       }
       for (const auto& [first, end] : mine.samples) {
         run.resize(static_cast<size_t>(end - first));
-        resolving.readSamples(first, run.size(), run.rgba.data(), run.xy.data());
+        held.copy(first, end, run.rgba.data(), run.xy.data());
         out.putArray(run.rgba.data(), run.rgba.size());
         out.putArray(run.xy.data(), run.xy.size());
       }

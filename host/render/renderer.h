@@ -72,6 +72,13 @@ class Renderer {
   void setFilmBatchSlices(size_t slices);
   size_t filmBatchSlices() const { return m_tracers.front()->filmBatchSlices(); }
 
+  // How many samples a part other than 0 (setFrameParts) puts through its
+  // resolver's film window at once to resolve its own pixels (16 slices, 24 MiB,
+  // by default). The image does not depend on it; tests set it low to cut a
+  // run of units into several pieces.
+  static constexpr std::uint64_t kResolvePieceSamples = 16 * DeviceTracer::kSliceRays;
+  void setResolvePieceSamples(std::uint64_t samples) { m_resolve_piece_samples = samples > 0 ? samples : 1; }
+
   // How the next renders build their acceleration structure (the defaults
   // unless set); the image does not depend on it.
   void setAccelBuildOptions(const AccelBuildOptions& options) { m_accel_build = options; }
@@ -109,10 +116,12 @@ class Renderer {
   DealtUnits deal(const std::vector<std::uint64_t>& unit_samples,
                   const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
                   const ProgressFn& progress);
+  class HeldUnits;
   // With frame parts: part 0 gathers what it needs from the others and resolves
-  // the frame (render/part_resolve.h).
+  // the frame (render/part_resolve.h); the units this part's devices handed
+  // over are in `held`.
   void resolveAcrossParts(const SamplingOptions& sampling, const RenderOptions& opt,
-                          const std::vector<std::uint32_t>& part_of, std::uint64_t unit_size,
+                          const std::vector<std::uint32_t>& part_of, std::uint64_t unit_size, HeldUnits& held,
                           DeviceTracer& resolving, RenderResult& result);
   // Units of slices (with several devices, or parts) rather than one unit a pass.
   bool unitsOfSlices() const { return m_tracers.size() > 1 || m_parts.shared(); }
@@ -122,6 +131,11 @@ class Renderer {
   void gatherAovs(RenderResult& result);
   // The first device that did not fail this frame.
   size_t survivor(const RenderStats& stats) const;
+  // The first live device on which hold(tracer) does not throw FilmTooLarge
+  // (a film of the whole frame), or the first device's FilmTooLarge.
+  size_t holdWholeFilm(const RenderStats& stats, const std::function<void(DeviceTracer&)>& hold);
+  // The position of a tracer among this renderer's.
+  size_t deviceIndex(const DeviceTracer& tracer) const;
 
   std::vector<Context*> m_contexts;
   std::vector<std::unique_ptr<DeviceTracer>> m_tracers;
@@ -130,6 +144,7 @@ class Renderer {
   AccelBuildOptions m_accel_build;
   std::vector<std::pair<size_t, std::uint64_t>> m_faults;  // (device, unit)
   FrameParts m_parts;
+  std::uint64_t m_resolve_piece_samples = kResolvePieceSamples;
 };
 
 }  // namespace prism

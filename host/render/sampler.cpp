@@ -194,6 +194,10 @@ void checkCount(std::uint64_t count, const char* what) {
 
 }  // namespace
 
+int filterReach(FilterKind kind) {
+  return static_cast<int>(std::ceil(static_cast<float>(filterRadius(kind)) - 0.5f));
+}
+
 double filterRadius(FilterKind kind) {
   switch (kind) {
     case FilterKind::Box:
@@ -293,6 +297,7 @@ std::vector<float> resolveSamples(Context& context, const SamplingOptions& optio
       .arg(static_cast<cl_int>(options.spp))
       .arg(xy)
       .arg(rad)
+      .arg(static_cast<cl_int>(0))  // every sample of the frame
       .arg(static_cast<cl_int>(0))
       .arg(static_cast<cl_int>(pixels))
       .arg(film)

@@ -20,6 +20,9 @@ constexpr const char* kRenderLoopProgram = "render_loop.cl";
 
 // Support radius in pixels: box 0.5, tent 1, gaussian 1.5, mitchell 2.
 double filterRadius(FilterKind kind);
+// The rows and columns of pixels either side of a pixel whose samples its
+// resolve reads (kernels/resolve.cl): ceil(radius - 1/2), in float as there.
+int filterReach(FilterKind kind);
 
 // N points on the unit torus [0,1)^2 at least `min_distance` apart (toroidal
 // distance, computed on the stored float coordinates, which are multiples of

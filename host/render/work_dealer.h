@@ -21,6 +21,7 @@ struct DeviceShare {
   std::uint64_t units = 0;      // units it finished (that count: none once it failed)
   std::uint64_t samples = 0;    // primary samples in them
   double busy_seconds = 0;      // wall time spent in its units
+  std::uint64_t film_bytes = 0;  // device memory its film took at its largest: the frame's, or a window of it
   bool failed = false;          // retired mid-frame; its unfinished unit went to the others
   std::string failure;          // why
 };

@@ -58,7 +58,7 @@ class NanReport(Structure):
 
 class DeviceShare(Structure):
     _fields_ = [("struct_size", c_size_t), ("units", c_uint64), ("samples", c_uint64), ("busy_seconds", c_double),
-                ("failed", c_uint32), ("failure", c_char_p), ("device", c_char_p)]
+                ("failed", c_uint32), ("failure", c_char_p), ("device", c_char_p), ("film_bytes", c_uint64)]
 
 
 class RenderStats(Structure):

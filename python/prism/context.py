@@ -138,7 +138,8 @@ class Context:
         shadows, bounds, aa_threshold, aa_max_level (the scene's own where not given), check_nan (True: the
         stats' "nan" is None or the first non-finite contribution and its ray). `aovs`: names among depth,
         normal, primid, albedo. The stats' "devices" say how much of the frame each
-        device traced, "warnings" name a device that failed mid-frame (the others
+        device traced and the film memory it held ("film_bytes": the whole frame's on
+        the device that resolves it, one unit's on the others), "warnings" name a device that failed mid-frame (the others
         traced its part). `progress(fraction)` is called as the render goes;
         return True from it to cancel (prism.Cancelled is raised)."""
         o = self.options(scene, **options)
@@ -181,7 +182,7 @@ class Context:
             check(lib.prismGetRenderDeviceShare(self._handle, i, ctypes.byref(share)))
             shares.append({"device": (share.device or b"").decode(), "units": share.units, "samples": share.samples,
                            "busy_seconds": share.busy_seconds, "failed": bool(share.failed),
-                           "failure": (share.failure or b"").decode()})
+                           "failure": (share.failure or b"").decode(), "film_bytes": share.film_bytes})
         return shares
 
     def _warnings(self):

@@ -247,6 +247,9 @@ assert (a.aovs["primid"] == b.aovs["primid"]).all()
 shares = b.stats["devices"]
 assert [s["device"] for s in shares] == [d["name"] for d in several.devices]
 assert sum(s["samples"] for s in shares) == 320 * 240 * 4 and not any(s["failed"] for s in shares)
+# The first device resolves the frame and holds its film (rgba and x, y: 24 bytes a
+# sample); the others one unit of 65,536 samples each.
+assert [s["film_bytes"] for s in shares] == [24 * 320 * 240 * 4] + [24 * 65536] * 2, shares
 assert b.stats["warnings"] == [] and len(a.stats["devices"]) == 1
 print("ok")
 """

@@ -377,6 +377,16 @@ int main(int argc, char** argv) {
   /* one device traced every sample of the 8x6 render, one per pixel */
   CHECK(share.units == 1 && share.samples == 8 * 6 && share.failed == 0 && share.failure && share.failure[0] == 0);
   CHECK(share.device && strcmp(share.device, first_info.name) == 0);
+  /* it resolved the frame: the whole film, rgba and (x, y) a sample */
+  CHECK(share.film_bytes == 8 * 6 * 6 * sizeof(float));
+  /* a caller built before film_bytes: its shorter struct is filled up to there */
+  share.film_bytes = 7;
+  share.struct_size = offsetof(PrismDeviceShare, film_bytes);
+  CHECK_OK(prismGetRenderDeviceShare(ctx, 0, &share));
+  CHECK(share.film_bytes == 7 && share.units == 1);
+  share.struct_size = offsetof(PrismDeviceShare, film_bytes) - 1;
+  BAD(prismGetRenderDeviceShare(ctx, 0, &share), "prismGetRenderDeviceShare");
+  share.struct_size = sizeof share;
   BAD(prismGetRenderDeviceShareCount(NULL, &u32), "prismGetRenderDeviceShareCount");
   BAD(prismGetRenderDeviceShareCount(ctx, NULL), "prismGetRenderDeviceShareCount");
   CHECK_OK(prismGetRenderDeviceShareCount(ctx, &u32));

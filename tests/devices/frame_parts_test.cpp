@@ -108,7 +108,7 @@ struct PartsOutcome {
 // with options_of(p).
 PartsOutcome tryInParts(const std::vector<std::vector<Context*>>& parts_devices, const Scene& scene,
                         const std::function<RenderOptions(std::uint32_t part)>& options_of,
-                        const Dealing& dealing = kStretches) {
+                        const Dealing& dealing = kStretches, std::uint64_t resolve_piece = 0) {
   const auto parts = static_cast<std::uint32_t>(parts_devices.size());
   Loopback loopback(parts);
   std::vector<RenderResult> results(parts);
@@ -118,6 +118,7 @@ PartsOutcome tryInParts(const std::vector<std::vector<Context*>>& parts_devices,
     threads.emplace_back([&, p] {
       try {
         Renderer renderer(parts_devices[p]);
+        if (resolve_piece > 0) renderer.setResolvePieceSamples(resolve_piece);
         FrameParts fp;
         fp.part = p;
         fp.parts = parts;
@@ -140,8 +141,9 @@ PartsOutcome tryInParts(const std::vector<std::vector<Context*>>& parts_devices,
 }
 
 std::vector<RenderResult> renderInParts(const std::vector<std::vector<Context*>>& parts_devices, const Scene& scene,
-                                        const RenderOptions& options, const Dealing& dealing = kStretches) {
-  PartsOutcome outcome = tryInParts(parts_devices, scene, [&](std::uint32_t) { return options; }, dealing);
+                                        const RenderOptions& options, const Dealing& dealing = kStretches,
+                                        std::uint64_t resolve_piece = 0) {
+  PartsOutcome outcome = tryInParts(parts_devices, scene, [&](std::uint32_t) { return options; }, dealing, resolve_piece);
   for (const std::string& e : outcome.errors) REQUIRE(e.empty());
   return std::move(outcome.results);
 }
@@ -276,9 +278,24 @@ TEST_CASE("parts resolve their own pixels: the same bits as one process with eve
   for (FilterKind f : {FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian, FilterKind::Mitchell}) {
     o.filter = f;
     const RenderResult reference = one.render(scene, o);
-    for (const auto& layout : {std::vector<std::vector<Context*>>{{all[0]}, {all[1]}},
-                               std::vector<std::vector<Context*>>{{all[2]}, {all[0]}, {all[1]}}})
-      requireSameFrame(reference, renderInParts(layout, scene, o)[0]);
+    const std::vector<RenderResult> two = renderInParts({{all[0]}, {all[1]}}, scene, o);
+    requireSameFrame(reference, two[0]);
+    // Part 0's device held the frame's film (rgba and x, y: 24 bytes a sample);
+    // part 1's put its run of units (2 of the 5) through its window in one piece.
+    REQUIRE(two[0].stats.devices.size() == 2);
+    CHECK(two[0].stats.devices[0].film_bytes == 24 * reference.stats.rays_by_kind[0]);
+    CHECK(two[0].stats.devices[1].film_bytes == 24 * two[0].stats.devices[1].samples);
+    CHECK(two[0].stats.devices[1].samples < reference.stats.rays_by_kind[0]);
+    requireSameFrame(reference, renderInParts({{all[2]}, {all[0]}, {all[1]}}, scene, o)[0]);
+    // Pieces of 5,000 samples (312 pixels and a half at 16 spp): part 1, on two
+    // devices, resolves its pixels a piece at a time, and its window holds no more
+    // than a piece and the samples within the filter's reach either side.
+    const std::uint64_t piece = 5000;
+    const std::vector<RenderResult> pieces = renderInParts({{all[0]}, {all[1], all[2]}}, scene, o, kStretches, piece);
+    requireSameFrame(reference, pieces[0]);
+    const std::uint64_t reach = static_cast<std::uint64_t>(filterReach(f)) * (160 + 1) * 16;  // samples either side
+    for (size_t d = 1; d < 3; ++d)
+      CHECK(pieces[0].stats.devices[d].film_bytes <= 24 * std::max(DeviceTracer::kSliceRays, piece + 2 * reach));
   }
   o.aa = AaMode::Quincunx;  // corners shared by pixels: parts send samples
   o.spp = 1;

@@ -7,12 +7,15 @@
 // (device_fixtures.h): three PoCL devices of one kind on the same cores.
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "device/cl_error.h"
 #include "device_fixtures.h"
+#include "render/device_tracer.h"
 
 using namespace prism;
 
@@ -94,6 +97,27 @@ TEST_CASE("a device that fails mid-frame is left out with a warning and the othe
       CHECK(sharedSamples(r.stats) == reference.stats.rays_by_kind[0]);
     }
   }
+  SECTION("a device that hands its units over fails after finishing some: they are traced again") {
+    two.injectDeviceFault(1, 1);
+    const RenderResult r = two.render(scene, o);
+    requireSameFrame(reference, r);
+    if (r.stats.devices[1].failed) CHECK(r.stats.devices[0].samples == reference.stats.rays_by_kind[0]);
+  }
+  SECTION("the device that resolves fails after gathering the other's units: those are traced again") {
+    // 19 units: the first device fails at its fourth, by when it has (as a rule)
+    // written units of the second into its film; they go with it.
+    RenderOptions many = o;
+    many.spp = 16;
+    const RenderResult ref = one.render(scene, many);
+    two.injectDeviceFault(0, 3);
+    const RenderResult r = two.render(scene, many);
+    requireSameFrame(ref, r);
+    if (r.stats.devices[0].failed) CHECK(r.stats.devices[1].samples == ref.stats.rays_by_kind[0]);
+    // The failure's warning, and when it had gathered units, one that says they were traced again.
+    REQUIRE(!r.stats.warnings.empty());
+    CHECK(r.stats.warnings.size() <= 2);
+    if (r.stats.warnings.size() == 2) CHECK(r.stats.warnings[1].find("traced again") != std::string::npos);
+  }
   SECTION("adaptive sampling: the failed device's part of every pass goes to the other") {
     const RenderOptions adaptive = optionsFor(scene, kCases[3]);
     const RenderResult ref = one.render(scene, adaptive);
@@ -150,4 +174,112 @@ TEST_CASE("a scene names its devices in render.device, checked for its form when
   CHECK_THROWS_WITH(load(R"("0,,1")"), Catch::Contains("render.device: devices '0,,1': each comma-separated part"));
   CHECK_THROWS_WITH(load(R"("all,0")"), Catch::Contains("'all' stands alone"));
   CHECK_THROWS_WITH(load("3"), Catch::Contains("render.device") && Catch::Contains("expected a string"));
+}
+
+// A context for device `like` whose description says it has `bytes` of memory:
+// the film check (DeviceTracer::checkFilmFits) goes by the description.
+static std::unique_ptr<Context> withMemory(const Context& like, std::uint64_t bytes) {
+  DeviceDescription d = like.device();
+  d.global_memory_bytes = bytes;
+  return std::make_unique<Context>(d, true);
+}
+
+TEST_CASE("a device with memory for a unit of the frame but not the whole frame shares it") {
+  const std::vector<Context*> all = poclDevices();
+  REQUIRE(all.size() >= 2);
+  const Scene scene = loadSceneFile(std::string(PRISM_SOURCE_DIR "/scenes/whitted.json"));
+  RenderOptions o = RenderOptions::fromScene(scene);
+  o.width = 320;
+  o.height = 240;
+  o.aa = AaMode::Jitter;
+  o.spp = 16;  // 19 units
+  o.first_hit = FirstHitMode::Trace;
+  const std::uint64_t samples = static_cast<std::uint64_t>(o.width) * o.height * o.spp;
+  const std::uint64_t film = 24 * samples, window = 24 * DeviceTracer::kSliceRays;  // rgba and (x, y) a sample
+  REQUIRE(film >= 4 * window);
+
+  // The least memory (to 1 MiB) with which the device takes the frame's film
+  // alone, found by the device's own refusals; the render stops at its first chunk.
+  const auto fits = [&](std::uint64_t bytes) {
+    auto context = withMemory(*all[1], bytes);
+    Renderer alone(*context);
+    try {
+      alone.render(scene, o, [](double) { return false; });
+    } catch (const FilmTooLarge&) {
+      return false;
+    } catch (const RenderCancelled&) {
+    }
+    return true;
+  };
+  std::uint64_t refused = 0, taken = std::uint64_t{16} << 30;
+  REQUIRE(fits(taken));
+  while (taken - refused > (1u << 20)) {
+    const std::uint64_t mid = refused + (taken - refused) / 2;
+    (fits(mid) ? taken : refused) = mid;
+  }
+  // Half the film less: the frame does not fit, a unit of it does, with room to spare.
+  const std::uint64_t little_bytes = taken - film / 2;
+  REQUIRE(!fits(little_bytes));
+  auto little = withMemory(*all[1], little_bytes);
+
+  Renderer one(*all[0]);
+  const RenderResult reference = one.render(scene, o);
+  Renderer pair({all[0], little.get()});
+  const RenderResult shared = pair.render(scene, o);
+  requireSameFrame(reference, shared);
+  REQUIRE(shared.stats.devices.size() == 2);
+  CHECK(!shared.stats.devices[1].failed);
+  CHECK(shared.stats.devices[1].samples > 0);
+  CHECK(sharedSamples(shared.stats) == samples);
+  // The first held the frame's film, the other one unit's.
+  CHECK(shared.stats.devices[0].film_bytes == film);
+  CHECK(shared.stats.devices[1].film_bytes == window);
+  // Named first, it cannot resolve the frame: the device after it does.
+  Renderer reversed({little.get(), all[0]});
+  const RenderResult other_way = reversed.render(scene, o);
+  requireSameFrame(reference, other_way);
+  CHECK(other_way.stats.devices[0].samples > 0);
+  CHECK(other_way.stats.devices[0].film_bytes == window);
+  CHECK(other_way.stats.devices[1].film_bytes == film);
+  CHECK(other_way.stats.warnings.empty());
+  // Alone, it refuses the frame and says what would fit.
+  Renderer alone(*little);
+  CHECK_THROWS_WITH(alone.render(scene, o),
+                    Catch::Contains(all[1]->device().name) && Catch::Contains("fewer samples per pixel"));
+
+  // A device with memory to spare still cannot take 2^31 samples: the kernels
+  // number them with an int. 4096x4096 at 128 spp is 2^31; 127 spp would do.
+  DeviceDescription vast = all[1]->device();
+  vast.global_memory_bytes = vast.max_alloc_bytes = std::uint64_t{1} << 50;
+  Context huge(vast, true);
+  Renderer over(huge);
+  RenderOptions keys = o;
+  keys.width = keys.height = 4096;
+  keys.spp = 128;
+  CHECK_THROWS_WITH(over.render(scene, keys), Catch::Contains("2147483648 samples") &&
+                                                  Catch::Contains("under 2^31") && Catch::Contains("at most 127"));
+}
+
+TEST_CASE("the Z-buffer's batches trace in a device's window and reach the film that resolves the frame") {
+  // Jitter at 14 spp, 640x480: two batches of the Z-buffer (64 slices, then
+  // 106,496 samples). The first device fails at once, so the second, which holds one
+  // batch at a time, traces both, then takes the whole film to resolve it.
+  const std::vector<Context*> all = poclDevices();
+  REQUIRE(all.size() >= 2);
+  const Scene scene = loadSceneFile(std::string(PRISM_SOURCE_DIR "/scenes/whitted.json"));
+  RenderOptions o = RenderOptions::fromScene(scene);
+  o.width = 640;
+  o.height = 480;
+  o.aa = AaMode::Jitter;
+  o.spp = 14;
+  o.first_hit = FirstHitMode::ZBuffer;
+  REQUIRE(static_cast<std::uint64_t>(o.width) * o.height * o.spp > DeviceTracer::kZBufferBatch);
+  Renderer one(*all[0]);
+  const RenderResult reference = one.render(scene, o);
+  Renderer two(pick(all, {0, 1}));
+  two.injectDeviceFault(0, 0);
+  const RenderResult r = two.render(scene, o);
+  requireSameFrame(reference, r);
+  CHECK(r.stats.devices[0].failed);
+  CHECK(r.stats.devices[1].units == 2);
 }
