@@ -3,82 +3,17 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <string>
 
 #include "kernels/shared/ray_gpu.h"
 #include "device/cl_error.h"
+#include "render/held_units.h"
 #include "render/light_buffer.h"
 #include "render/part_resolve.h"
 #include "render/shared_stretches.h"
 #include "render/work_dealer.h"
 
 namespace prism {
-namespace {
-
-// The film entries (rgba) and positions (x, y) of a run of samples, on the host.
-struct SampleRun {
-  std::vector<float> rgba, xy;
-  void resize(size_t n) {
-    rgba.resize(4 * n);
-    xy.resize(2 * n);
-  }
-  size_t size() const { return xy.size() / 2; }
-};
-
-}  // namespace
-
-// The film entries of the units that devices handed over as they finished
-// them (every device but the one that resolves the frame holds a window of one
-// unit): on the host until the resolver's thread writes them into its film
-// between its own units, or, at a part other than 0, until their run is resolved.
-class Renderer::HeldUnits {
- public:
-  HeldUnits(std::uint64_t unit_size, size_t units) : m_unit_size(unit_size), m_units(units) {}
-  // Unit u's entries, from the film of the tracer that just traced it (on that device's thread).
-  void take(size_t u, std::uint64_t samples, const DeviceTracer& tracer) {
-    SampleRun run;
-    run.resize(static_cast<size_t>(samples));
-    tracer.readSamples(u * m_unit_size, run.size(), run.rgba.data(), run.xy.data());
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_units[u] = std::move(run);
-    m_waiting.push_back(u);
-  }
-  // The units taken since the last call, let go here (any thread).
-  std::vector<std::pair<size_t, SampleRun>> takeWaiting() {
-    std::vector<std::pair<size_t, SampleRun>> out;
-    std::lock_guard<std::mutex> lock(m_mutex);
-    for (size_t u : m_waiting)
-      if (m_units[u].size() > 0) out.emplace_back(u, std::move(m_units[u]));
-    m_waiting.clear();
-    for (auto& [u, run] : out) m_units[u] = SampleRun();
-    return out;
-  }
-  // Writes them into the tracer's film (which must hold their samples).
-  void write(std::vector<std::pair<size_t, SampleRun>>& units, DeviceTracer& tracer) const {
-    for (auto& [u, run] : units) tracer.writeSamples(u * m_unit_size, run.size(), run.rgba.data(), run.xy.data());
-  }
-  // After the deal (no device thread left): whether unit u is here, and samples
-  // [first, end), all in held units, into rgba (4 a sample) and xy (2).
-  bool holds(size_t u) const { return m_units[u].size() > 0; }
-  void copy(std::uint64_t first, std::uint64_t end, float* rgba, float* xy) const {
-    for (std::uint64_t k = first; k < end;) {
-      const SampleRun& run = m_units.at(static_cast<size_t>(k / m_unit_size));
-      const std::uint64_t at = k % m_unit_size;
-      if (at >= run.size()) throw std::logic_error("HeldUnits::copy: a sample no unit holds");
-      const std::uint64_t n = std::min<std::uint64_t>(end - k, run.size() - at);
-      std::copy_n(run.rgba.begin() + 4 * at, 4 * n, rgba + 4 * (k - first));
-      std::copy_n(run.xy.begin() + 2 * at, 2 * n, xy + 2 * (k - first));
-      k += n;
-    }
-  }
-
- private:
-  std::uint64_t m_unit_size;
-  std::mutex m_mutex;
-  std::vector<SampleRun> m_units;
-  std::vector<size_t> m_waiting;  // taken, not yet let go (a unit traced again comes twice)
-};
 
 Renderer::Renderer(Context& context) : Renderer(std::vector<Context*>{&context}) {}
 

@@ -29,6 +29,8 @@
 
 namespace prism {
 
+class HeldUnits;
+
 struct RenderResult {
   int width = 0, height = 0;
   std::vector<float> rgba;          // width*height*4, linear, rows top to bottom
@@ -116,7 +118,6 @@ class Renderer {
   DealtUnits deal(const std::vector<std::uint64_t>& unit_samples,
                   const std::function<void(DeviceTracer&, size_t unit)>& unit, RenderResult& result,
                   const ProgressFn& progress);
-  class HeldUnits;
   // With frame parts: part 0 gathers what it needs from the others and resolves
   // the frame (render/part_resolve.h); the units this part's devices handed
   // over are in `held`.
