@@ -13,7 +13,8 @@
  *     pixels inside the bounds, and an atomic minimum of (t, primitive) into the
  *     sample's depth + id entry;
  *   firsthit_resolve: per sample, the winner's t, u, v by the tracer's own
- *     prim_intersect.
+ *     prim_intersect; firsthit_resolve_cells the same for a whole batch in
+ *     pixel order, cell by cell (the entries in the order the raster wrote them).
  *
  * The ray tests are the tracer's (prim_intersect; for a plain triangle its
  * triangle_intersect split at the origin, which gives the same bits), so a
@@ -317,4 +318,45 @@ __kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL
     }
   }
   hits[k] = hit;
+}
+
+/* A batch in pixel order (spp > 0), resolved whole, cell by cell: the entries
+ * and directions are read in the order the raster wrote them, and each hit goes
+ * to its sample's place in the batch. */
+__kernel void firsthit_resolve_cells(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int cells, int spp,
+                                     int batch_first, __global const int* cell_start, __global const float4* sorted,
+                                     __global const uint* entries, __global HitGpu* hits) {
+  const Geometry g = GEOMETRY_INIT;
+  int c = get_global_id(0);
+  if (c >= cells) return;
+  int begin = cell_start[c], end = cell_start[c + 1];
+  if (begin == end) return;
+  int2 xy = firsthit_cell_xy(c, camera->width);
+  int p = xy.y * camera->width + xy.x;
+  /* slot = cell_start[c] + g - max(p * spp, batch_first) (firsthit_pixel_slot) */
+  int base = max(p * spp, batch_first) - batch_first - begin;
+  float3 o = load3g(camera->origin);
+  for (int slot = begin; slot < end; ++slot) {
+#ifdef PRISM_ZBUFFER_WIDE
+    int prim = (int)(((__global const ulong*)entries)[slot] & 0xffffffffu);
+#else
+    int prim = (int)entries[2 * slot + 1];
+#endif
+    HitGpu hit;
+    hit.t = PRISM_INF;
+    hit.prim = -1;
+    hit.u = 0.0f;
+    hit.v = 0.0f;
+    if (prim >= 0) {
+      float4 s = sorted[slot];
+      float t, u, v;
+      if (prim_intersect(&g, prim, o, (float3)(s.x, s.y, s.z), camera->shutter_open, 0.0f, PRISM_INF, &t, &u, &v)) {
+        hit.t = t;
+        hit.prim = prim;
+        hit.u = u;
+        hit.v = v;
+      }
+    }
+    hits[base + slot] = hit;
+  }
 }

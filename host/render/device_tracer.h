@@ -57,9 +57,9 @@ class DeviceTracer {
   static constexpr size_t kShadowSlots = 4 * kSliceRays;
   // Samples the first-hit pass rasterises at once (a whole number of slices),
   // and its device bytes per sample (sorted ray direction 16, depth + id 8,
-  // positions 8 where the render has no frame-wide copy of them).
+  // the batch's hits 16, positions 8 where the render has no frame-wide copy of them).
   static constexpr size_t kZBufferBatch = 64 * kSliceRays;
-  static constexpr size_t kZBufferBytesPerSample = 32;
+  static constexpr size_t kZBufferBytesPerSample = 48;
 
   explicit DeviceTracer(Context& context);
   ~DeviceTracer();

@@ -43,6 +43,7 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_emit = m_context.kernel("firsthit.cl", "firsthit_emit", options);
   m_raster = m_context.kernel("firsthit.cl", "firsthit_raster", options);
   m_resolve = m_context.kernel("firsthit.cl", "firsthit_resolve", options);
+  m_resolve_cells = m_context.kernel("firsthit.cl", "firsthit_resolve_cells", options);
 
   m_camera = Buffer(m_context, sizeof(CameraGpu));
   m_camera.write(&c, sizeof(CameraGpu));
@@ -151,6 +152,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   m_entries.fill(&empty, sizeof empty, count * 2 * sizeof(std::uint32_t));
   m_pixel_spp = pixel_spp;
   m_batch_first = first;
+  m_batch_resolved = false;
 
   // The primitives' film bounds and their (primitive, block) pairs.
   const size_t items = m_prims + m_others;
@@ -194,6 +196,19 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
 void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t count, Buffer& hits) {
   if (count == 0) return;
   if (first + count > m_batch) throw std::logic_error("FirstHitPass::resolve outside the rasterised batch");
+  if (m_pixel_spp > 0) {
+    // In pixel order the whole batch is resolved at its first chunk, cell by
+    // cell (its entries read in the order the raster wrote them: per sample, in
+    // the chunk's order, they were a cache miss each), and each chunk copies its part.
+    if (first == 0 && count == m_batch) return resolveBatch(geometry, hits);
+    if (!m_batch_resolved) {
+      m_batch_hits.reserve(m_context, m_batch * sizeof(HitGpu));
+      resolveBatch(geometry, m_batch_hits);
+      m_batch_resolved = true;
+    }
+    m_batch_hits.copyTo(hits, count * sizeof(HitGpu), first * sizeof(HitGpu), 0);
+    return;
+  }
   KernelLaunch resolve = m_context.launch(m_resolve);
   resolve.arg(m_camera);
   geometry.bind(resolve)
@@ -207,6 +222,20 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
       .arg(static_cast<cl_int>(first))
       .arg(hits)
       .run(count);
+}
+
+void FirstHitPass::resolveBatch(const GeometryBuffers& geometry, Buffer& hits) {
+  KernelLaunch cells = m_context.launch(m_resolve_cells);
+  cells.arg(m_camera);
+  geometry.bind(cells)
+      .arg(static_cast<cl_int>(cellCount()))
+      .arg(static_cast<cl_int>(m_pixel_spp))
+      .arg(static_cast<cl_int>(m_batch_first))
+      .arg(m_cell_start)
+      .arg(m_sorted)
+      .arg(m_entries)
+      .arg(hits)
+      .run(cellCount());
 }
 
 size_t FirstHitPass::cellCount() const {
@@ -223,7 +252,7 @@ void FirstHitPass::run(const GeometryBuffers& geometry, const Buffer& xy, size_t
 size_t FirstHitPass::deviceBytes() const {
   size_t bytes = 0;
   for (const Buffer* b : {&m_camera, &m_other_prims, &m_other_boxes, &m_cell_count, &m_cell_start, &m_sorted, &m_slot_of,
-                          &m_entries, &m_cells, &m_block_count, &m_pair_start, &m_pairs})
+                          &m_entries, &m_batch_hits, &m_cells, &m_block_count, &m_pair_start, &m_pairs})
     bytes += b->bytes();
   return bytes;
 }

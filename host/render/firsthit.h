@@ -5,7 +5,8 @@
 // is projected to conservative film bounds, and each (primitive, 8x8-pixel
 // block) pair tests the samples of its pixels with the tracer's own ray test,
 // keeping the nearest (t, primitive) per sample by an atomic minimum; a resolve
-// per chunk then gives the hits. Cameras with depth of field or motion blur need
+// then gives the hits (per chunk, or for a batch in pixel order all at once,
+// cell by cell, each chunk copying its part). Cameras with depth of field or motion blur need
 // traced primary rays instead (docs/sampling.md).
 #pragma once
 
@@ -66,17 +67,20 @@ class FirstHitPass {
   DeviceScan m_scan;
   cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_counts = nullptr,
             m_pixel_starts = nullptr, m_pixel_scatter = nullptr, m_bound = nullptr, m_emit = nullptr,
-            m_raster = nullptr, m_resolve = nullptr;
+            m_raster = nullptr, m_resolve = nullptr, m_resolve_cells = nullptr;
   bool m_wide = false;
   int m_width = 0, m_height = 0;
   std::size_t m_prims = 0, m_others = 0, m_batch = 0, m_batch_first = 0;
   int m_pixel_spp = 0;  // the last batch's pixel_spp
+  bool m_batch_resolved = false;  // m_batch_hits holds the last batch's hits (pixel order)
   FirstHitStats m_stats;
   // Cells of the film's 8x8 blocks, the last row and column of blocks padded.
   std::size_t cellCount() const;
+  // Every hit of the last batch, which came in pixel order, into hits[k] for position k of the batch.
+  void resolveBatch(const GeometryBuffers& geometry, Buffer& hits);
 
-  Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_sorted, m_slot_of, m_entries, m_cells,
-      m_block_count, m_pair_start, m_pairs;
+  Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_sorted, m_slot_of, m_entries,
+      m_batch_hits, m_cells, m_block_count, m_pair_start, m_pairs;
 };
 
 // `--first-hit auto`'s choice: whether the Z-buffer should beat tracing the
