@@ -285,18 +285,15 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
   }
 }
 
-/* first: the chunk's first sample within the batch; spp > 0: the batch (whose
- * first sample of the image is batch_first) came in pixel order, else slot_of
- * has the slots. */
+/* A batch in any order, a chunk at a time: first is the chunk's first sample
+ * within the batch, slot_of has the slots. */
 __kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
-                               int spp, int batch_first, __global const int* cell_start,
                                __global const int* slot_of, __global const float4* sorted,
                                __global const uint* entries, int first, __global HitGpu* hits) {
   const Geometry g = GEOMETRY_INIT;
   int k = get_global_id(0);
   if (k >= count) return;
-  int slot = spp > 0 ? firsthit_pixel_slot(camera->width, batch_first, spp, cell_start, batch_first + first + k)
-                     : slot_of[first + k];
+  int slot = slot_of[first + k];
   int prim = (int)entries[2 * slot + 1];
 #ifdef PRISM_ZBUFFER_WIDE
   prim = (int)(((__global const ulong*)entries)[slot] & 0xffffffffu);
@@ -323,12 +320,13 @@ __kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL
 /* A batch in pixel order (spp > 0), resolved whole, cell by cell: the entries
  * and directions are read in the order the raster wrote them, and each hit goes
  * to its sample's place in the batch. */
-__kernel void firsthit_resolve_cells(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int cells, int spp,
-                                     int batch_first, __global const int* cell_start, __global const float4* sorted,
-                                     __global const uint* entries, __global HitGpu* hits) {
+__kernel void firsthit_resolve_cells(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int cell_first,
+                                     int cells, int spp, int batch_first, __global const int* cell_start,
+                                     __global const float4* sorted, __global const uint* entries,
+                                     __global HitGpu* hits) {
   const Geometry g = GEOMETRY_INIT;
-  int c = get_global_id(0);
-  if (c >= cells) return;
+  if (get_global_id(0) >= cells) return;
+  int c = cell_first + (int)get_global_id(0); /* the batch's block rows only */
   int begin = cell_start[c], end = cell_start[c + 1];
   if (begin == end) return;
   int2 xy = firsthit_cell_xy(c, camera->width);

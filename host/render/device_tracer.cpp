@@ -565,7 +565,9 @@ void DeviceTracer::checkFilmFits(std::uint64_t samples, bool with_positions, std
     other += b->bytes();
   for (const Buffer& b : m_levels) other += b.bytes();
   if (m_firsthit && m_zbuffer)  // its per-sample buffers at their largest (a batch, or all samples if fewer)
-    other += m_firsthit->deviceBytes() + std::min<std::uint64_t>(kZBufferBatch, samples) * kZBufferBytesPerSample;
+    other += m_firsthit->deviceBytes() - m_firsthit->batchBytes() +
+             std::max<std::uint64_t>(m_firsthit->batchBytes(),
+                                     std::min<std::uint64_t>(kZBufferBatch, samples) * kZBufferBytesPerSample);
 
   const std::uint64_t per_sample = kFilmBytesPerSample + (with_positions ? kPositionBytesPerSample : 0);
   const std::uint64_t max_keys = static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());

@@ -89,6 +89,8 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
 void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, size_t xy_first, size_t first,
                              size_t count, int pixel_spp) {
   if (!m_raster) throw std::logic_error("FirstHitPass::rasterize before prepare");
+  m_batch = 0;  // until this batch is rasterised
+  m_batch_resolved = false;
   if (count == 0) return;
   if (first + count > static_cast<size_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::invalid_argument("first hit zbuffer: more than 2^31 - 1 positions in one batch");
@@ -152,7 +154,6 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   m_entries.fill(&empty, sizeof empty, count * 2 * sizeof(std::uint32_t));
   m_pixel_spp = pixel_spp;
   m_batch_first = first;
-  m_batch_resolved = false;
 
   // The primitives' film bounds and their (primitive, block) pairs.
   const size_t items = m_prims + m_others;
@@ -213,9 +214,6 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
   resolve.arg(m_camera);
   geometry.bind(resolve)
       .arg(static_cast<cl_int>(count))
-      .arg(static_cast<cl_int>(m_pixel_spp))
-      .arg(static_cast<cl_int>(m_batch_first))
-      .arg(m_cell_start)
       .arg(m_slot_of)
       .arg(m_sorted)
       .arg(m_entries)
@@ -225,17 +223,25 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
 }
 
 void FirstHitPass::resolveBatch(const GeometryBuffers& geometry, Buffer& hits) {
-  KernelLaunch cells = m_context.launch(m_resolve_cells);
-  cells.arg(m_camera);
-  geometry.bind(cells)
-      .arg(static_cast<cl_int>(cellCount()))
+  // The block rows of the batch's pixels: a frame of many batches would
+  // otherwise launch every cell of the film for each.
+  constexpr size_t kBlock = 8;  // FIRSTHIT_BLOCK
+  const size_t spp = static_cast<size_t>(m_pixel_spp), width = static_cast<size_t>(m_width);
+  const size_t first_row = m_batch_first / spp / width / kBlock, last_row = (m_batch_first + m_batch - 1) / spp / width / kBlock;
+  const size_t row_cells = (width + kBlock - 1) / kBlock * kBlock * kBlock;
+  const size_t cells = (last_row - first_row + 1) * row_cells;
+  KernelLaunch launch = m_context.launch(m_resolve_cells);
+  launch.arg(m_camera);
+  geometry.bind(launch)
+      .arg(static_cast<cl_int>(first_row * row_cells))
+      .arg(static_cast<cl_int>(cells))
       .arg(static_cast<cl_int>(m_pixel_spp))
       .arg(static_cast<cl_int>(m_batch_first))
       .arg(m_cell_start)
       .arg(m_sorted)
       .arg(m_entries)
       .arg(hits)
-      .run(cellCount());
+      .run(cells);
 }
 
 size_t FirstHitPass::cellCount() const {
@@ -247,6 +253,10 @@ size_t FirstHitPass::cellCount() const {
 void FirstHitPass::run(const GeometryBuffers& geometry, const Buffer& xy, size_t count, Buffer& hits, int pixel_spp) {
   rasterize(geometry, xy, 0, 0, count, pixel_spp);
   resolve(geometry, 0, count, hits);
+}
+
+size_t FirstHitPass::batchBytes() const {
+  return m_sorted.bytes() + m_slot_of.bytes() + m_entries.bytes() + m_batch_hits.bytes();
 }
 
 size_t FirstHitPass::deviceBytes() const {

@@ -58,8 +58,10 @@ class FirstHitPass {
   void run(const GeometryBuffers& geometry, const Buffer& xy, std::size_t count, Buffer& hits, int pixel_spp = 0);
 
   const FirstHitStats& stats() const { return m_stats; }
-  // Device memory it holds now.
+  // Device memory it holds now, and the part of it that grows with a batch's
+  // samples (directions, slots, entries, hits).
   std::size_t deviceBytes() const;
+  std::size_t batchBytes() const;
 
  private:
   Context& m_context;

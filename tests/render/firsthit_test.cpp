@@ -252,6 +252,57 @@ TEST_CASE("first hits agree with traced rays on a real mesh", "[firsthit][mesh]"
   checkAgreement(scene, samplePoints(80, 60, 4, 21));
 }
 
+TEST_CASE("a batch in pixel order, begun and ended mid-pixel and resolved in chunks, gives the hits of sorting it",
+          "[firsthit][mesh]") {
+  // The renders' path: a batch of the frame's samples from `first` on, in a
+  // window of positions that starts before it (xy_first), resolved chunk by
+  // chunk from the batch's hits (firsthit_resolve_cells), against the same
+  // positions sorted by the counting sort and resolved sample by sample.
+  prism::SharedMesh bunny = prism_test::loadTestMesh("bunny/bun_zipper_res3.ply");
+  Scene scene = emptyScene({0, 1.6, 4}, {0, 1.0, 0}, 35, 80, 60);
+  Object mesh;
+  mesh.type = ObjectType::Mesh;
+  mesh.mesh = bunny;
+  mesh.transform = Transform::translate({0.2, -0.4, 0}) * Transform::scale({14, 14, 14});
+  scene.objects.push_back(mesh);
+  scene.objects.push_back(sphere({-1.3, 0.6, -0.5}, 0.5));
+  RenderOptions options = RenderOptions::fromScene(scene);
+  const GpuScene gpu = flattenScene(scene, options);
+  SamplingOptions random;
+  random.mode = AaMode::Random;
+  random.spp = 3;
+  const std::vector<float> all = samplePositions(sharedContext(), random, 80, 60, 5);  // 14,400
+  // From pixel (40, 30), on the bunny, its second sample, to a pixel's second sample.
+  const size_t xy_first = 1000, first = 3 * (30 * 80 + 40) + 1, count = 4999;
+  REQUIRE((first + count) % 3 != 0);
+  Context& context = sharedContext();
+  FirstHitPass pass(context);
+  pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
+  GeometryBuffers geometry(context, gpu);
+  Buffer xy(context, (all.size() - 2 * xy_first) * sizeof(float));
+  xy.write(all.data() + 2 * xy_first, (all.size() - 2 * xy_first) * sizeof(float));
+  Buffer hits(context, count * sizeof(HitGpu));
+
+  pass.rasterize(geometry, xy, xy_first, first, count, 0);
+  pass.resolve(geometry, 0, count, hits);
+  const std::vector<HitGpu> sorted = hits.readVector<HitGpu>(count);
+
+  pass.rasterize(geometry, xy, xy_first, first, count, 3);
+  std::vector<HitGpu> chunked;
+  for (size_t at = 0; at < count; at += 777) {
+    const size_t n = std::min<size_t>(777, count - at);
+    pass.resolve(geometry, at, n, hits);
+    const std::vector<HitGpu> part = hits.readVector<HitGpu>(n);
+    chunked.insert(chunked.end(), part.begin(), part.end());
+  }
+  REQUIRE(chunked.size() == sorted.size());
+  REQUIRE(sorted.front().prim >= 0);  // the split pixels' samples are hits, so their places are checked
+  CHECK(std::memcmp(chunked.data(), sorted.data(), sorted.size() * sizeof(HitGpu)) == 0);
+  size_t hit = 0;
+  for (const HitGpu& h : sorted) hit += h.prim >= 0;
+  CHECK(hit > count / 4);  // the bunny and the sphere fill part of the frame
+}
+
 TEST_CASE("first hits on a million triangles match the closed form", "[firsthit][scale]") {
   // A grid of nx x ny quads in the plane z = 0 spanning [-1, 1]^2, each cut along
   // its diagonal into (p00, p10, p11) and (p00, p11, p01), seen head-on from z = 3.
