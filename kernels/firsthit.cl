@@ -285,18 +285,14 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
   }
 }
 
-/* A batch in any order, a chunk at a time: first is the chunk's first sample
- * within the batch, slot_of has the slots. */
-__kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
-                               __global const int* slot_of, __global const float4* sorted,
-                               __global const uint* entries, int first, __global HitGpu* hits) {
-  const Geometry g = GEOMETRY_INIT;
-  int k = get_global_id(0);
-  if (k >= count) return;
-  int slot = slot_of[first + k];
-  int prim = (int)entries[2 * slot + 1];
+/* The hit of the sample in `slot`: the winner its entry names, by the
+ * tracer's own prim_intersect (a miss when no primitive won). */
+inline HitGpu firsthit_slot_hit(const Geometry* g, __global const CameraGpu* camera, __global const float4* sorted,
+                                __global const uint* entries, int slot) {
 #ifdef PRISM_ZBUFFER_WIDE
-  prim = (int)(((__global const ulong*)entries)[slot] & 0xffffffffu);
+  int prim = (int)(((__global const ulong*)entries)[slot] & 0xffffffffu);
+#else
+  int prim = (int)entries[2 * slot + 1];
 #endif
   HitGpu hit;
   hit.t = PRISM_INF;
@@ -306,15 +302,26 @@ __kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL
   if (prim >= 0) {
     float4 s = sorted[slot];
     float t, u, v;
-    if (prim_intersect(&g, prim, load3g(camera->origin), (float3)(s.x, s.y, s.z), camera->shutter_open, 0.0f,
-                         PRISM_INF, &t, &u, &v)) {
+    if (prim_intersect(g, prim, load3g(camera->origin), (float3)(s.x, s.y, s.z), camera->shutter_open, 0.0f,
+                       PRISM_INF, &t, &u, &v)) {
       hit.t = t;
       hit.prim = prim;
       hit.u = u;
       hit.v = v;
     }
   }
-  hits[k] = hit;
+  return hit;
+}
+
+/* A batch in any order, a chunk at a time: first is the chunk's first sample
+ * within the batch, slot_of has the slots. */
+__kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
+                               __global const int* slot_of, __global const float4* sorted,
+                               __global const uint* entries, int first, __global HitGpu* hits) {
+  const Geometry g = GEOMETRY_INIT;
+  int k = get_global_id(0);
+  if (k >= count) return;
+  hits[k] = firsthit_slot_hit(&g, camera, sorted, entries, slot_of[first + k]);
 }
 
 /* A batch in pixel order (spp > 0), resolved whole, cell by cell: the entries
@@ -333,28 +340,5 @@ __kernel void firsthit_resolve_cells(__global const CameraGpu* camera, GEOMETRY_
   int p = xy.y * camera->width + xy.x;
   /* slot = cell_start[c] + g - max(p * spp, batch_first) (firsthit_pixel_slot) */
   int base = max(p * spp, batch_first) - batch_first - begin;
-  float3 o = load3g(camera->origin);
-  for (int slot = begin; slot < end; ++slot) {
-#ifdef PRISM_ZBUFFER_WIDE
-    int prim = (int)(((__global const ulong*)entries)[slot] & 0xffffffffu);
-#else
-    int prim = (int)entries[2 * slot + 1];
-#endif
-    HitGpu hit;
-    hit.t = PRISM_INF;
-    hit.prim = -1;
-    hit.u = 0.0f;
-    hit.v = 0.0f;
-    if (prim >= 0) {
-      float4 s = sorted[slot];
-      float t, u, v;
-      if (prim_intersect(&g, prim, o, (float3)(s.x, s.y, s.z), camera->shutter_open, 0.0f, PRISM_INF, &t, &u, &v)) {
-        hit.t = t;
-        hit.prim = prim;
-        hit.u = u;
-        hit.v = v;
-      }
-    }
-    hits[base + slot] = hit;
-  }
+  for (int slot = begin; slot < end; ++slot) hits[base + slot] = firsthit_slot_hit(&g, camera, sorted, entries, slot);
 }

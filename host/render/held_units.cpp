@@ -24,8 +24,8 @@ std::vector<std::pair<std::size_t, SampleRun>> HeldUnits::takeWaiting() {
   return out;
 }
 
-void HeldUnits::write(std::vector<std::pair<std::size_t, SampleRun>>& units, DeviceTracer& tracer) const {
-  for (auto& [u, run] : units) tracer.writeSamples(u * m_unit_size, run.size(), run.rgba.data(), run.xy.data());
+void HeldUnits::write(const std::vector<std::pair<std::size_t, SampleRun>>& units, DeviceTracer& tracer) const {
+  for (const auto& [u, run] : units) tracer.writeSamples(u * m_unit_size, run.size(), run.rgba.data(), run.xy.data());
 }
 
 void HeldUnits::copy(std::uint64_t first, std::uint64_t end, float* rgba, float* xy) const {

@@ -38,7 +38,7 @@ class HeldUnits {
   // traced again after it was let go comes again.
   std::vector<std::pair<std::size_t, SampleRun>> takeWaiting();
   // Writes such units into the tracer's film, which must hold their samples.
-  void write(std::vector<std::pair<std::size_t, SampleRun>>& units, DeviceTracer& tracer) const;
+  void write(const std::vector<std::pair<std::size_t, SampleRun>>& units, DeviceTracer& tracer) const;
 
   // Once no device thread is left: whether unit u is here, and samples
   // [first, end), all in units here, into rgba (4 a sample) and xy (2).

@@ -397,9 +397,7 @@ void Renderer::renderSamples(const SamplingOptions& sampling, const RenderOption
       if (dealt.owner[u] != kNoDevice && gathered[u] && !held.holds(u)) lost.push_back(u);
   }
   DeviceTracer& resolving = *m_tracers[resolving_device];
-  auto waiting = held.takeWaiting();
-  held.write(waiting, resolving);
-  waiting.clear();
+  held.write(held.takeWaiting(), resolving);
   // (Its ray counts were counted when the unit was first traced.)
   for (size_t u : lost) resolving.traceSamples(u * unit_size, u * unit_size + unit_samples[u], {});
   if (!lost.empty())

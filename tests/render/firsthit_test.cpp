@@ -238,7 +238,8 @@ TEST_CASE("first hits agree with traced rays when primitives cross the camera pl
   checkAgreement(scene, samplePoints(64, 48, 4, 3));
 }
 
-TEST_CASE("first hits agree with traced rays on a real mesh", "[firsthit][mesh]") {
+// The 3,851-triangle bunny filling the middle of an 80x60 film, a sphere beside it.
+static Scene bunnyAndSphere() {
   prism::SharedMesh bunny = prism_test::loadTestMesh("bunny/bun_zipper_res3.ply");
   REQUIRE(bunny->triangleCount() == 3851);
   Scene scene = emptyScene({0, 1.6, 4}, {0, 1.0, 0}, 35, 80, 60);
@@ -248,6 +249,11 @@ TEST_CASE("first hits agree with traced rays on a real mesh", "[firsthit][mesh]"
   mesh.transform = Transform::translate({0.2, -0.4, 0}) * Transform::scale({14, 14, 14});
   scene.objects.push_back(mesh);
   scene.objects.push_back(sphere({-1.3, 0.6, -0.5}, 0.5));
+  return scene;
+}
+
+TEST_CASE("first hits agree with traced rays on a real mesh", "[firsthit][mesh]") {
+  Scene scene = bunnyAndSphere();
   scene.objects.push_back(plane({0, 0.05, 0}, {0, 1, 0}));
   checkAgreement(scene, samplePoints(80, 60, 4, 21));
 }
@@ -258,14 +264,7 @@ TEST_CASE("a batch in pixel order, begun and ended mid-pixel and resolved in chu
   // window of positions that starts before it (xy_first), resolved chunk by
   // chunk from the batch's hits (firsthit_resolve_cells), against the same
   // positions sorted by the counting sort and resolved sample by sample.
-  prism::SharedMesh bunny = prism_test::loadTestMesh("bunny/bun_zipper_res3.ply");
-  Scene scene = emptyScene({0, 1.6, 4}, {0, 1.0, 0}, 35, 80, 60);
-  Object mesh;
-  mesh.type = ObjectType::Mesh;
-  mesh.mesh = bunny;
-  mesh.transform = Transform::translate({0.2, -0.4, 0}) * Transform::scale({14, 14, 14});
-  scene.objects.push_back(mesh);
-  scene.objects.push_back(sphere({-1.3, 0.6, -0.5}, 0.5));
+  const Scene scene = bunnyAndSphere();
   RenderOptions options = RenderOptions::fromScene(scene);
   const GpuScene gpu = flattenScene(scene, options);
   SamplingOptions random;
