@@ -17,7 +17,7 @@ namespace {
 
 const char* kUsage =
     "usage: prism-bench mpi [--ranks LIST] [--scene FILE] [--size WxH] [--spp N] [--device SEL]\n"
-    "                       [--repeat N] [--uneven] [--out DIR]\n"
+    "                       [--repeat N] [--uneven] [--tcp] [--out DIR]\n"
     "\n"
     "Renders --scene (default scenes/whitted.json) at --size (default 640x480) with\n"
     "--spp jittered samples (default 16) by prism render alone and under mpirun\n"
@@ -32,6 +32,11 @@ const char* kUsage =
     "19), a slower node; the ranks deal the frame's units as their devices come\n"
     "free, and the table after the times shows how many each took and how long\n"
     "each was busy in the last run (equal busy times: none waited for another).\n"
+    "--tcp: the ranks talk over Open MPI's TCP transport and its pt2pt one-sided\n"
+    "component (OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self OMPI_MCA_osc=pt2pt), as\n"
+    "machines without RDMA hardware do, instead of shared memory; the share table\n"
+    "is printed too (a rank's compare-and-swap on rank 0's words then waits for\n"
+    "rank 0 to progress MPI: docs/devices.md).\n"
     "Writes the images to --out (default bench-out).\n";
 
 struct Run {
@@ -67,7 +72,7 @@ int mpiMain(const std::vector<std::string>& args) {
   std::string scene = PRISM_SOURCE_DIR "/scenes/whitted.json", device = "0", out_dir = "bench-out";
   std::vector<int> ranks{2, 3};
   int width = 640, height = 480, spp = 16, repeats = 3;
-  bool uneven = false;
+  bool uneven = false, tcp = false;
   const int status = parseBenchOptions(args, "mpi", kUsage, [&](const std::string& a, const OptionValue& value) {
     if (a == "--ranks") {
       ranks.clear();
@@ -91,6 +96,8 @@ int mpiMain(const std::vector<std::string>& args) {
       repeats = std::max(1, std::stoi(value()));
     } else if (a == "--uneven") {
       uneven = true;
+    } else if (a == "--tcp") {
+      tcp = true;
     } else if (a == "--out") {
       out_dir = value();
     } else {
@@ -112,6 +119,7 @@ int mpiMain(const std::vector<std::string>& args) {
     // Root may start ranks here (benchmark machines often run as root).
     const std::string mpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
                                "OMPI_MCA_btl_vader_single_copy_mechanism=none " +
+                               std::string(tcp ? "OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self OMPI_MCA_osc=pt2pt " : "") +
                                shellQuote(PRISM_MPIEXEC) + " --oversubscribe -np ";
     std::vector<int> counts{1};
     counts.insert(counts.end(), ranks.begin(), ranks.end());
@@ -137,8 +145,9 @@ int mpiMain(const std::vector<std::string>& args) {
     for (int k = 0; k < repeats; ++k)
       for (size_t i = 0; i < counts.size(); ++i) once(i);
 
-    std::printf("scene: %s, %dx%d at %d spp (jitter), device %s on every rank; median of %d runs, taking turns\n\n",
-                scene.c_str(), width, height, spp, device.c_str(), repeats);
+    std::printf("scene: %s, %dx%d at %d spp (jitter), device %s on every rank%s; median of %d runs, taking turns\n\n",
+                scene.c_str(), width, height, spp, device.c_str(), tcp ? ", ranks over TCP (osc pt2pt)" : "",
+                repeats);
     std::printf("%-8s %10s %12s %12s %14s  %s\n", "ranks", "wall s", "speed (wall)", "tracing s", "speed (tracing)",
                 "image");
     const std::string reference = fileBytes(runs[0].image);
@@ -148,8 +157,9 @@ int mpiMain(const std::vector<std::string>& args) {
                   median(runs[0].tracing) / tracing,
                   i == 0 ? "reference" : fileBytes(runs[i].image) == reference ? "same bits" : "DIFFERENT");
     }
-    if (uneven) {
-      std::printf("\nthe last rank on one PoCL thread at nice 19; each rank's share of the last run:\n");
+    if (uneven || tcp) {
+      std::printf("\n%seach rank's share of the last run:\n",
+                  uneven ? "the last rank on one PoCL thread at nice 19; " : "");
       std::printf("       device                                      units      samples     busy s\n");
       for (size_t i = 1; i < counts.size(); ++i) std::printf("%d ranks:\n%s", counts[i], runs[i].shares.c_str());
     }

@@ -153,7 +153,10 @@ PRISM_API PrismStatus prismSetProgressCallback(PrismContext context, PrismProgre
  * `desired`. It returns 0, or nonzero when the transport failed. prismRender
  * may call it from any of its threads, never two calls at once; each part
  * calls it on its own schedule, so it must not wait for the others (MPI:
- * MPI_Compare_and_swap on a window, as `prism render` does). */
+ * MPI_Compare_and_swap on a window, as `prism render` does; where the
+ * transport completes it only while the window's owner is inside MPI, as Open
+ * MPI's over TCP does, the owner must keep calling MPI meanwhile: `prism
+ * render` runs a thread on part 0 that does). */
 typedef void (*PrismReceiveFn)(void* receiver, uint32_t part, const void* data, uint64_t size);
 typedef int (*PrismExchangeFn)(void* user, int to_all, const void* data, uint64_t size, PrismReceiveFn receive,
                                void* receiver);

@@ -1,9 +1,14 @@
 #include "mpi_ranks.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cstdlib>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "args.h"
@@ -38,6 +43,45 @@ bool g_owes_part = false;  // this rank has yet to render its part of a shared f
 Ranks g_ranks;
 MPI_Comm g_comm = MPI_COMM_NULL;  // prism's own, so that its tags meet no one else's
 
+bool g_serialized = false;  // MPI_THREAD_SERIALIZED: the devices' threads may call it, one at a time
+// Held for every MPI call once a window's progress thread may run beside the
+// main thread and the devices' threads (MPI_THREAD_SERIALIZED: one call at a time).
+std::mutex g_calls;
+
+// Calls MPI every kProgressEvery on the window owner's behalf while the window
+// is open. Where the network does not do remote atomics itself (plain TCP, or
+// any transport where Open MPI falls back to its pt2pt one-sided component),
+// another rank's compare-and-swap on rank 0's words completes only while rank
+// 0 is inside MPI. Rank 0 calls MPI once a unit it takes, so the others waited
+// for its units: on loopback over TCP, rank 1 took 7 of 57 units and was busy
+// 0.27 s of 1.1 (docs/devices.md). An MPI_Iprobe drives the progress engine
+// without taking any message.
+class WindowProgress {
+ public:
+  explicit WindowProgress(MPI_Comm comm) : m_thread([this, comm] { run(comm); }) {}
+  ~WindowProgress() {
+    m_stop = true;
+    m_thread.join();
+  }
+  WindowProgress(const WindowProgress&) = delete;
+  WindowProgress& operator=(const WindowProgress&) = delete;
+
+ private:
+  static constexpr std::chrono::microseconds kProgressEvery{250};
+  void run(MPI_Comm comm) {
+    while (!m_stop) {
+      {
+        std::lock_guard<std::mutex> lock(g_calls);
+        int flag = 0;
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &flag, MPI_STATUS_IGNORE);
+      }
+      std::this_thread::sleep_for(kProgressEvery);
+    }
+  }
+  std::atomic<bool> m_stop{false};
+  std::thread m_thread;
+};
+
 // The ranks sharing a frame, as PrismFrameParts.user: all of them (a still), or
 // a group sharing one of an animation's last frames.
 struct PartsComm {
@@ -47,9 +91,9 @@ struct PartsComm {
   // rank 0 (MPI_WIN_NULL where some rank has too few of MPI's threads for the
   // dealing, or MPI could not make the window: openWords).
   MPI_Win words = MPI_WIN_NULL;
+  std::unique_ptr<WindowProgress> progress;  // on rank 0 while the words are open
 };
 PartsComm g_all, g_group;
-bool g_serialized = false;  // MPI_THREAD_SERIALIZED: the devices' threads may call it, one at a time
 
 // MPI counts in int: large exchanges go in pieces.
 constexpr std::uint64_t kPiece = 1u << 30;
@@ -83,6 +127,7 @@ void broadcastBytes(MPI_Comm comm, std::vector<char>& bytes, int root) {
 // the run (MPI_ERRORS_ARE_FATAL), so a return here is a success.
 int exchange(void* user, int to_all, const void* data, std::uint64_t size, PrismReceiveFn receive, void* receiver) {
   const PartsComm& parts = *static_cast<const PartsComm*>(user);
+  std::lock_guard<std::mutex> lock(g_calls);
   if (to_all) {
     for (int p = 0; p < parts.size; ++p) {
       std::vector<char> bytes;
@@ -109,6 +154,7 @@ int exchange(void* user, int to_all, const void* data, std::uint64_t size, Prism
 // ranks deal the frame's units among themselves as their devices come free.
 int compareSwap(void* user, std::uint32_t word, std::uint64_t expected, std::uint64_t desired, std::uint64_t* found) {
   const PartsComm& parts = *static_cast<const PartsComm*>(user);
+  std::lock_guard<std::mutex> lock(g_calls);
   MPI_Compare_and_swap(&desired, &expected, found, MPI_UINT64_T, 0, static_cast<MPI_Aint>(word), parts.words);
   MPI_Win_flush(0, parts.words);
   return 0;
@@ -119,6 +165,7 @@ int compareSwap(void* user, std::uint32_t word, std::uint64_t expected, std::uin
 // network), no rank uses it: each traces its own stretch.
 void openWords(PartsComm& comm) {
   if (!g_serialized) return;  // the same on every rank (startRanks)
+  std::unique_lock<std::mutex> lock(g_calls);  // another window's progress thread may run
   std::uint64_t* base = nullptr;
   const MPI_Aint bytes = comm.rank == 0 ? static_cast<MPI_Aint>(comm.size) * 8 : 0;
   MPI_Comm_set_errhandler(comm.comm, MPI_ERRORS_RETURN);
@@ -140,11 +187,14 @@ void openWords(PartsComm& comm) {
     MPI_Win_flush(0, comm.words);
   }
   MPI_Barrier(comm.comm);
+  lock.unlock();
+  if (comm.rank == 0) comm.progress = std::make_unique<WindowProgress>(comm.comm);
 }
 
 // Collective over comm, where every rank of it ends normally.
 void closeWords(PartsComm& comm) {
   if (comm.words == MPI_WIN_NULL) return;
+  comm.progress.reset();
   MPI_Win_unlock_all(comm.words);
   MPI_Win_free(&comm.words);
 }
@@ -190,7 +240,9 @@ Ranks startRanks() {
   MPI_Comm_size(g_comm, &size);
   g_ranks.rank = static_cast<std::uint32_t>(rank);
   g_ranks.size = static_cast<std::uint32_t>(size);
-  g_all = PartsComm{g_comm, rank, size};
+  g_all.comm = g_comm;
+  g_all.rank = rank;
+  g_all.size = size;
   return g_ranks;
 }
 
@@ -201,11 +253,13 @@ PrismFrameParts frameParts(const Ranks& ranks) {
 
 PrismFrameParts groupFrameParts(const FrameDeal& deal) {
   if (!g_started) return partsAlone();
+  std::unique_lock<std::mutex> lock(g_calls);  // g_all's progress thread may run
   MPI_Comm_split(g_comm, deal.shares ? static_cast<int>(deal.group) : MPI_UNDEFINED, static_cast<int>(g_ranks.rank),
                  &g_group.comm);
   if (!deal.shares) return partsAlone();
   MPI_Comm_rank(g_group.comm, &g_group.rank);
   MPI_Comm_size(g_group.comm, &g_group.size);
+  lock.unlock();
   g_owes_part = g_group.size > 1;  // before anything can fail: the group waits for this rank
   if (static_cast<std::uint32_t>(g_group.rank) != deal.group_part ||
       static_cast<std::uint32_t>(g_group.size) != deal.group_parts)
@@ -222,6 +276,9 @@ void ranksWorkAlone() {
 
 int endRanks(int code) {
   if (!g_started) return code;
+  // From here only this thread calls MPI.
+  g_all.progress.reset();
+  g_group.progress.reset();
   // So does one that fails before its part of a frame it shares with others.
   if (code != 0 && g_ranks.shared() && (!g_rendered || g_owes_part)) MPI_Abort(MPI_COMM_WORLD, code);
   // Ranks that work alone wait for each other before any exits: mpirun ends

@@ -48,6 +48,25 @@ function(same a b)
   endif()
 endfunction()
 
+# Two ranks' --stats device rows (columns: units, samples, busy s, film MiB):
+# sets `units` (their sum), `unit_list` and `films`.
+function(unit_shares out)
+  string(REGEX MATCHALL "\\[[01]\\] part [01]: [^\n]* ([0-9]+) +[0-9]+ +[0-9.]+ +[0-9.]+\n" shares "${out}")
+  set(units 0)
+  set(unit_list "")
+  set(films "")
+  foreach(line IN LISTS shares)
+    string(REGEX REPLACE ".*: .* ([0-9]+) +[0-9]+ +[0-9.]+ +[0-9.]+\n" "\\1" k "${line}")
+    string(REGEX REPLACE ".* ([0-9.]+)\n" "\\1" film "${line}")
+    math(EXPR units "${units} + ${k}")
+    list(APPEND unit_list "${k}")
+    list(APPEND films "${film}")
+  endforeach()
+  set(units "${units}" PARENT_SCOPE)
+  set(unit_list "${unit_list}" PARENT_SCOPE)
+  set(films "${films}" PARENT_SCOPE)
+endfunction()
+
 # The colour image and two AOVs, sample-sequence modes.
 render(1 one ${size} --quiet)
 render(1 one_normal ${size} --aov normal --quiet)
@@ -87,16 +106,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "ranks of different speeds: exited ${rc}:\n${out}${err}")
 endif()
 same(one_many two_uneven)
-# Columns: units, samples, busy s, film MiB.
-string(REGEX MATCHALL "\\[[01]\\] part [01]: [^\n]* ([0-9]+) +[0-9]+ +[0-9.]+ +[0-9.]+\n" shares "${out}")
-set(units 0)
-set(films "")
-foreach(line IN LISTS shares)
-  string(REGEX REPLACE ".*: .* ([0-9]+) +[0-9]+ +[0-9.]+ +[0-9.]+\n" "\\1" k "${line}")
-  string(REGEX REPLACE ".* ([0-9.]+)\n" "\\1" film "${line}")
-  math(EXPR units "${units} + ${k}")
-  list(APPEND films "${film}")
-endforeach()
+unit_shares("${out}")
 if(NOT units EQUAL 19)
   message(FATAL_ERROR "the ranks must trace the 19 units once between them, not ${units}:\n${out}")
 endif()
@@ -105,6 +115,27 @@ list(GET films 0 film0)
 list(GET films 1 film1)
 if(NOT film0 STREQUAL "28.1" OR NOT film1 LESS film0)
   message(FATAL_ERROR "rank 0's film must be the frame's 28.1 MiB and rank 1's less, not ${film0} and ${film1}:\n${out}")
+endif()
+
+# Over TCP with Open MPI's pt2pt one-sided component (no remote atomics in the
+# network), rank 1's compare-and-swap on rank 0's words completes only while
+# rank 0 is inside MPI: rank 0 runs a progress thread while the window is open
+# (host/cli/mpi_ranks.cpp). The same bits, every unit once, and rank 1 takes a
+# share: without the thread it took 2 of the 19 units in each of three runs,
+# with it 8 or 9 (an even split is 9 or 10; 4 leaves room for a busy machine).
+run(${CMAKE_COMMAND} -E env OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self OMPI_MCA_osc=pt2pt
+    ${MPIEXEC} --oversubscribe -np 2 ${PRISM} render "${scene}" -o "${WORK_DIR}/two_tcp.pfm" ${many} --device 0 --stats)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "two ranks over TCP: exited ${rc}:\n${out}${err}")
+endif()
+same(one_many two_tcp)
+if(NOT out MATCHES "; units dealt as devices come free\\)")
+  message(FATAL_ERROR "over TCP the ranks must still deal the units as their devices come free:\n${out}")
+endif()
+unit_shares("${out}")
+list(GET unit_list 1 rank1)
+if(NOT units EQUAL 19 OR rank1 LESS 4)
+  message(FATAL_ERROR "over TCP the ranks must trace the 19 units once, rank 1 at least 4 of them, not ${unit_list}:\n${out}")
 endif()
 
 # Adaptive sampling: every rank chooses each pass's points from every colour.
