@@ -79,7 +79,7 @@ void writeCsv(const std::string& path, const std::vector<FirstHitRow>& rows) {
       << "\n";
 }
 
-void writePlot(const std::string& path, const std::vector<FirstHitRow>& rows, int width, int height) {
+void writePlot(const std::string& path, const std::vector<FirstHitRow>& rows, int width, int height, int spp) {
   // Kernels alone, and with their set-up. Markers only: the plot's legend note
   // reads "squares: meshes", which these are (short names: the legend is narrow).
   PlotSeries zbuffer{"zbuffer", {}, {}, 0xD55E00};
@@ -94,7 +94,8 @@ void writePlot(const std::string& path, const std::vector<FirstHitRow>& rows, in
     trace_setup.markers.emplace_back(n, r.trace_seconds + r.build_seconds);
   }
   writeLogLogPlot(path,
-                  "Primary visibility, " + std::to_string(width) + "x" + std::to_string(height) + " samples",
+                  "Primary visibility, " + std::to_string(width) + "x" + std::to_string(height) +
+                      (spp == 1 ? " samples" : " pixels at " + std::to_string(spp) + " spp"),
                   "triangles", "seconds", {zbuffer, trace, zbuffer_setup, trace_setup});
 }
 
@@ -104,7 +105,7 @@ const char* const kFirstHitUsage =
     "usage: prism-bench firsthit [options] [FILES...]\n"
     "\n"
     "Primary visibility two ways on the same samples (every pixel centre of a camera\n"
-    "framing the mesh): the first-hit Z-buffer pass (samples sorted by pixel,\n"
+    "framing the mesh, or --spp per pixel): the first-hit Z-buffer pass (samples sorted by pixel,\n"
     "primitives projected and scan-converted by kernels) against primary rays traced\n"
     "through a BVH. Times the host set-up (FirstHitPass::prepare; BVH build) and the\n"
     "device work apart, and checks that both give the same hits bit for bit. FILES\n"
@@ -113,7 +114,10 @@ const char* const kFirstHitUsage =
     "\n"
     "options:\n"
     "  --device D     OpenCL device: index, cpu, gpu or a name substring\n"
-    "  --size WxH     samples (default 1024x1024)\n"
+    "  --size WxH     the film (default 1024x1024)\n"
+    "  --spp N        samples per pixel (default 1: its centre), in pixel order as a\n"
+    "                 render's per-pixel modes place them: the centres of the cells of\n"
+    "                 a ceil(sqrt N)-wide grid over the pixel, the first N of them\n"
     "  --repeat N     timings are the median of N runs (default 3)\n"
     "  --profile      also print each z-buffer kernel's device time (one run)\n"
     "  --out DIR      where firsthit.csv and firsthit.png go (default bench-out)\n"
@@ -146,7 +150,7 @@ int firstHitMain(const std::vector<std::string>& args) {
       return 0;
     } else if (a == "--profile") {
       options.profile = true;
-    } else if (a == "--device" || a == "--size" || a == "--repeat" || a == "--out" || a == "--data") {
+    } else if (a == "--device" || a == "--size" || a == "--spp" || a == "--repeat" || a == "--out" || a == "--data") {
       if (!has_value) return usage(a + " needs a value");
       const std::string v = args[++i];
       if (a == "--device") {
@@ -155,6 +159,8 @@ int firstHitMain(const std::vector<std::string>& args) {
         options.out_dir = v;
       } else if (a == "--data") {
         options.data_dir = v;
+      } else if (a == "--spp") {
+        if (!positive(v, &options.spp)) return usage("--spp: expected a positive count, got '" + v + "'");
       } else if (a == "--repeat") {
         if (!positive(v, &options.repeats)) return usage("--repeat: expected a positive count, got '" + v + "'");
       } else {
@@ -179,7 +185,8 @@ int firstHitMain(const std::vector<std::string>& args) {
 }
 
 std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
-  if (options.width < 1 || options.height < 1) throw std::invalid_argument("--size must be positive");
+  if (options.width < 1 || options.height < 1 || options.spp < 1)
+    throw std::invalid_argument("--size and --spp must be positive");
   DeviceDescription device = selectDevice(options.device);
   Context context(device, true);
   std::filesystem::create_directories(options.out_dir);
@@ -192,7 +199,8 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
   std::cout << "device: " << device.name << " (" << device.platform_name << ", driver " << device.driver_version << ", "
             << device.compute_units << " compute units)\n"
             << "samples: " << options.width << "x" << options.height
-            << " pixel centres, camera framing each mesh; median of " << options.repeats << " runs\n"
+            << (options.spp == 1 ? " pixel centres" : " pixels at " + std::to_string(options.spp) + " spp (a grid in each)")
+            << ", camera framing each mesh; median of " << options.repeats << " runs\n"
             << "zbuffer: host set-up (setup s) + every kernel of the pass (zbuf s: sort, bound, raster, resolve);\n"
                "trace: BVH build (build s) + extend kernel (trace s);\n"
                "x faster = trace s / zbuf s; x +setup = (build s + trace s) / (setup s + zbuf s); same% = hits "
@@ -213,12 +221,16 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
     row.scene = std::filesystem::path(path).filename().string();
     row.triangles = gpu.primitive_count;
 
-    // The same samples both ways: every pixel centre.
-    const size_t count = static_cast<size_t>(options.width) * options.height;
+    // The same samples both ways, in pixel order: every pixel's centre, or
+    // the centres of a grid's first spp cells over it.
+    const size_t spp = static_cast<size_t>(options.spp);
+    const size_t count = static_cast<size_t>(options.width) * options.height * spp;
+    const int grid = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(spp))));
     std::vector<float> xy(2 * count);
     for (size_t k = 0; k < count; ++k) {
-      xy[2 * k] = static_cast<float>(k % options.width) + 0.5f;
-      xy[2 * k + 1] = static_cast<float>(k / options.width) + 0.5f;
+      const size_t pixel = k / spp, cell = k % spp;
+      xy[2 * k] = static_cast<float>(pixel % options.width) + (static_cast<float>(cell % grid) + 0.5f) / grid;
+      xy[2 * k + 1] = static_cast<float>(pixel / options.width) + (static_cast<float>(cell / grid) + 0.5f) / grid;
     }
     Buffer xy_buffer(context, xy.size() * sizeof(float));
     xy_buffer.writeVector(xy);
@@ -236,18 +248,18 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
       context.finish();
       return secondsSince(start);
     });
-    pass.run(objects, xy_buffer, count, hit_buffer, 1);  // pixel centres, in pixel order
+    pass.run(objects, xy_buffer, count, hit_buffer, options.spp);  // in pixel order
     context.finish();
     row.pairs_per_prim = static_cast<double>(pass.stats().pairs) / std::max<size_t>(1, gpu.primitive_count);
     row.zbuffer_seconds = medianSeconds(options.repeats, [&] {
       auto start = Clock::now();
-      pass.run(objects, xy_buffer, count, hit_buffer, 1);  // pixel centres, in pixel order
+      pass.run(objects, xy_buffer, count, hit_buffer, options.spp);
       context.finish();
       return secondsSince(start);
     });
     if (options.profile) {
       context.profile().start();
-      pass.run(objects, xy_buffer, count, hit_buffer, 1);  // pixel centres, in pixel order
+      pass.run(objects, xy_buffer, count, hit_buffer, options.spp);
       std::printf("  z-buffer kernels, one run:");
       for (const KernelTime& k : context.profile().stop()) std::printf(" %s %.4f s", k.name.c_str(), k.seconds);
       std::printf("\n");
@@ -265,7 +277,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
         .arg(xy_buffer)
         .arg(aov)
         .arg(static_cast<cl_int>(0))   // first key
-        .arg(static_cast<cl_int>(1))   // spp
+        .arg(static_cast<cl_int>(options.spp))
         .arg(static_cast<cl_long>(0))  // strata group base
         .arg(static_cast<cl_int>(1))   // strata
         .arg(static_cast<cl_int>(count))
@@ -297,7 +309,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
     rows.push_back(row);
   }
   writeCsv(options.out_dir + "/firsthit.csv", rows);
-  writePlot(options.out_dir + "/firsthit.png", rows, options.width, options.height);
+  writePlot(options.out_dir + "/firsthit.png", rows, options.width, options.height, options.spp);
   std::cout << "\nwrote " << options.out_dir << "/firsthit.csv and " << options.out_dir << "/firsthit.png\n";
   return rows;
 }

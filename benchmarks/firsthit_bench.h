@@ -16,7 +16,8 @@ struct FirstHitBenchOptions {
   std::vector<std::string> files;     // mesh files; empty = the shared benchmark ladder
   std::string data_dir;               // --data: searched first for the ladder (bench_data.h)
   std::string out_dir = "bench-out";  // firsthit.csv and firsthit.png go here
-  int width = 1024, height = 1024;    // one primary sample per pixel, through the centre
+  int width = 1024, height = 1024;    // the film
+  int spp = 1;                        // samples per pixel, in pixel order: the centre, or a grid over the pixel
   int repeats = 3;                    // timings are the median of this many runs
   bool profile = false;               // print the z-buffer's kernel times
   std::string command;                // for the report
