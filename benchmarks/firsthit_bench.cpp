@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 
 #include "bench_data.h"
@@ -68,10 +70,10 @@ void printRow(const FirstHitRow& r) {
 void writeCsv(const std::string& path, const std::vector<FirstHitRow>& rows) {
   std::ofstream f(path);
   if (!f) throw std::runtime_error(path + ": cannot open for writing");
-  f << "mesh,triangles,pairs_per_primitive,setup_seconds,zbuffer_seconds,bvh_build_seconds,trace_seconds,"
+  f << "mesh,triangles,samples,pairs_per_primitive,setup_seconds,zbuffer_seconds,bvh_build_seconds,trace_seconds,"
        "trace_over_zbuffer,with_setup_ratio,agreement_percent,identical_percent,max_depth_error\n";
   for (const FirstHitRow& r : rows)
-    f << r.scene << "," << r.triangles << "," << fixed(r.pairs_per_prim, "%.4g") << ","
+    f << r.scene << "," << r.triangles << "," << r.samples << "," << fixed(r.pairs_per_prim, "%.4g") << ","
       << fixed(r.setup_seconds, "%.6g") << "," << fixed(r.zbuffer_seconds, "%.6g") << ","
       << fixed(r.build_seconds, "%.6g") << "," << fixed(r.trace_seconds, "%.6g") << ","
       << fixed(r.trace_seconds / r.zbuffer_seconds, "%.4g") << "," << fixed(withSetup(r), "%.4g") << ","
@@ -225,6 +227,10 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
     // the centres of a grid's first spp cells over it.
     const size_t spp = static_cast<size_t>(options.spp);
     const size_t count = static_cast<size_t>(options.width) * options.height * spp;
+    if (count > static_cast<size_t>(std::numeric_limits<std::int32_t>::max()))
+      throw std::invalid_argument("--size and --spp make " + std::to_string(count) +
+                                  " samples; one batch holds at most 2^31 - 1");
+    row.samples = count;
     const int grid = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(spp))));
     std::vector<float> xy(2 * count);
     for (size_t k = 0; k < count; ++k) {

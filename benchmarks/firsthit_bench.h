@@ -26,6 +26,7 @@ struct FirstHitBenchOptions {
 struct FirstHitRow {
   std::string scene;
   std::size_t triangles = 0;
+  std::size_t samples = 0;      // film pixels x samples per pixel
   double setup_seconds = 0;     // Z-buffer set-up on the host: FirstHitPass::prepare
   double zbuffer_seconds = 0;   // the whole pass on the device: sort, bound, raster, resolve
   double build_seconds = 0;     // trace set-up: BVH build on the host

@@ -33,8 +33,9 @@ const char* kUsage =
     "free, and the table after the times shows how many each took and how long\n"
     "each was busy in the last run (equal busy times: none waited for another).\n"
     "--tcp: the ranks talk over Open MPI's TCP transport and its pt2pt one-sided\n"
-    "component (OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self OMPI_MCA_osc=pt2pt), as\n"
-    "machines without RDMA hardware do, instead of shared memory; the share table\n"
+    "component over the loopback interface (OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self\n"
+    "OMPI_MCA_btl_tcp_if_include=lo OMPI_MCA_osc=pt2pt), as machines without RDMA\n"
+    "hardware talk, instead of shared memory; the share table\n"
     "is printed too (a rank's compare-and-swap on rank 0's words then waits for\n"
     "rank 0 to progress MPI: docs/devices.md).\n"
     "Writes the images to --out (default bench-out).\n";
@@ -119,7 +120,9 @@ int mpiMain(const std::vector<std::string>& args) {
     // Root may start ranks here (benchmark machines often run as root).
     const std::string mpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
                                "OMPI_MCA_btl_vader_single_copy_mechanism=none " +
-                               std::string(tcp ? "OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self OMPI_MCA_osc=pt2pt " : "") +
+                               std::string(tcp ? "OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self OMPI_MCA_btl_tcp_if_include=lo "
+                                               "OMPI_MCA_osc=pt2pt "
+                                             : "") +
                                shellQuote(PRISM_MPIEXEC) + " --oversubscribe -np ";
     std::vector<int> counts{1};
     counts.insert(counts.end(), ranks.begin(), ranks.end());

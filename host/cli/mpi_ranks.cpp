@@ -44,12 +44,13 @@ Ranks g_ranks;
 MPI_Comm g_comm = MPI_COMM_NULL;  // prism's own, so that its tags meet no one else's
 
 bool g_serialized = false;  // MPI_THREAD_SERIALIZED: the devices' threads may call it, one at a time
-// Held for every MPI call once a window's progress thread may run beside the
-// main thread and the devices' threads (MPI_THREAD_SERIALIZED: one call at a time).
+// Held for every MPI call made while a WindowProgress thread may run: those of
+// the frame parts' callbacks, which are all prismRender makes (the main thread
+// makes the others before or after a render, when none runs).
 std::mutex g_calls;
 
-// Calls MPI every kProgressEvery on the window owner's behalf while the window
-// is open. Where the network does not do remote atomics itself (plain TCP, or
+// Calls MPI every kProgressEvery on the window owner's behalf while a frame's
+// units are dealt. Where the network does not do remote atomics itself (plain TCP, or
 // any transport where Open MPI falls back to its pt2pt one-sided component),
 // another rank's compare-and-swap on rank 0's words completes only while rank
 // 0 is inside MPI. Rank 0 calls MPI once a unit it takes, so the others waited
@@ -91,7 +92,10 @@ struct PartsComm {
   // rank 0 (MPI_WIN_NULL where some rank has too few of MPI's threads for the
   // dealing, or MPI could not make the window: openWords).
   MPI_Win words = MPI_WIN_NULL;
-  std::unique_ptr<WindowProgress> progress;  // on rank 0 while the words are open
+  // On rank 0, from its first compare-and-swap of a frame (the deal has begun)
+  // to the next exchange (the deal is over, and a blocking exchange drives
+  // MPI's progress itself).
+  std::unique_ptr<WindowProgress> progress;
 };
 PartsComm g_all, g_group;
 
@@ -126,7 +130,8 @@ void broadcastBytes(MPI_Comm comm, std::vector<char>& bytes, int root) {
 // PrismFrameParts.exchange over the PartsComm in `user`. MPI's own errors end
 // the run (MPI_ERRORS_ARE_FATAL), so a return here is a success.
 int exchange(void* user, int to_all, const void* data, std::uint64_t size, PrismReceiveFn receive, void* receiver) {
-  const PartsComm& parts = *static_cast<const PartsComm*>(user);
+  PartsComm& parts = *static_cast<PartsComm*>(user);
+  parts.progress.reset();  // the deal is over (prismRender exchanges after it, on this thread)
   std::lock_guard<std::mutex> lock(g_calls);
   if (to_all) {
     for (int p = 0; p < parts.size; ++p) {
@@ -153,8 +158,9 @@ int exchange(void* user, int to_all, const void* data, std::uint64_t size, Prism
 // rank holds open (passive target), so rank 0 never waits on a request: the
 // ranks deal the frame's units among themselves as their devices come free.
 int compareSwap(void* user, std::uint32_t word, std::uint64_t expected, std::uint64_t desired, std::uint64_t* found) {
-  const PartsComm& parts = *static_cast<const PartsComm*>(user);
-  std::lock_guard<std::mutex> lock(g_calls);
+  PartsComm& parts = *static_cast<PartsComm*>(user);
+  std::lock_guard<std::mutex> lock(g_calls);  // prismRender never calls it twice at once
+  if (parts.rank == 0 && !parts.progress) parts.progress = std::make_unique<WindowProgress>(parts.comm);
   MPI_Compare_and_swap(&desired, &expected, found, MPI_UINT64_T, 0, static_cast<MPI_Aint>(word), parts.words);
   MPI_Win_flush(0, parts.words);
   return 0;
@@ -165,7 +171,6 @@ int compareSwap(void* user, std::uint32_t word, std::uint64_t expected, std::uin
 // network), no rank uses it: each traces its own stretch.
 void openWords(PartsComm& comm) {
   if (!g_serialized) return;  // the same on every rank (startRanks)
-  std::unique_lock<std::mutex> lock(g_calls);  // another window's progress thread may run
   std::uint64_t* base = nullptr;
   const MPI_Aint bytes = comm.rank == 0 ? static_cast<MPI_Aint>(comm.size) * 8 : 0;
   MPI_Comm_set_errhandler(comm.comm, MPI_ERRORS_RETURN);
@@ -187,8 +192,6 @@ void openWords(PartsComm& comm) {
     MPI_Win_flush(0, comm.words);
   }
   MPI_Barrier(comm.comm);
-  lock.unlock();
-  if (comm.rank == 0) comm.progress = std::make_unique<WindowProgress>(comm.comm);
 }
 
 // Collective over comm, where every rank of it ends normally.
@@ -253,13 +256,11 @@ PrismFrameParts frameParts(const Ranks& ranks) {
 
 PrismFrameParts groupFrameParts(const FrameDeal& deal) {
   if (!g_started) return partsAlone();
-  std::unique_lock<std::mutex> lock(g_calls);  // g_all's progress thread may run
   MPI_Comm_split(g_comm, deal.shares ? static_cast<int>(deal.group) : MPI_UNDEFINED, static_cast<int>(g_ranks.rank),
                  &g_group.comm);
   if (!deal.shares) return partsAlone();
   MPI_Comm_rank(g_group.comm, &g_group.rank);
   MPI_Comm_size(g_group.comm, &g_group.size);
-  lock.unlock();
   g_owes_part = g_group.size > 1;  // before anything can fail: the group waits for this rank
   if (static_cast<std::uint32_t>(g_group.rank) != deal.group_part ||
       static_cast<std::uint32_t>(g_group.size) != deal.group_parts)
