@@ -8,8 +8,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <functional>
+#include <limits>
+#include <random>
 #include <set>
 
 #include "accel/accel_scenes.h"
@@ -133,6 +136,63 @@ void checkComplete(const std::vector<ObjectGpu>& objects, const Cells& cells) {
 }
 
 }  // namespace
+
+TEST_CASE("a static triangle's box is its vertices' grown by 2^-20 of its largest extent, rounded outward, one float more",
+          "[accel][builder]") {
+  // The reference: the double arithmetic objectBounds documents, then the
+  // nearest float on the outer side found by stepping with std::nextafter, and
+  // one step more; compared bit for bit. Coordinates of every sign around zero
+  // (where the rounding's direction changes), of many magnitudes, and zeros.
+  const float inf = std::numeric_limits<float>::infinity();
+  auto outward = [inf](double x, bool down) {
+    float f = static_cast<float>(x);
+    while (down ? double(f) > x : double(f) < x) f = std::nextafter(f, down ? -inf : inf);
+    return std::nextafter(f, down ? -inf : inf);
+  };
+  auto bits = [](float f) {
+    std::uint32_t b;
+    std::memcpy(&b, &f, sizeof b);
+    return b;
+  };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> exponent(-30, 30), kind(0, 9);
+  for (int n = 0; n < 20000; ++n) {
+    ObjectGpu g{};
+    g.type = OBJECT_TRIANGLE;
+    const int e = exponent(rng);
+    for (float& v : g.p) v = kind(rng) == 0 ? 0.0f : static_cast<float>(std::ldexp(unit(rng), e));
+    double lo[3], hi[3], extent = 0;
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min({g.p[a], g.p[3 + a], g.p[6 + a]});
+      hi[a] = std::max({g.p[a], g.p[3 + a], g.p[6 + a]});
+      extent = std::max(extent, hi[a] - lo[a]);
+    }
+    const double pad = extent * 0x1p-20;
+    Aabb box;
+    REQUIRE(objectBounds(g, &box));
+    for (int a = 0; a < 3; ++a) {
+      INFO("triangle " << n << ", axis " << a << ": " << lo[a] << " to " << hi[a]);
+      CHECK(bits(box.lo[a]) == bits(outward(lo[a] - pad, true)));
+      CHECK(bits(box.hi[a]) == bits(outward(hi[a] + pad, false)));
+    }
+  }
+  // Not a triangle of finite vertices: no box.
+  for (float bad : {inf, -inf, std::numeric_limits<float>::quiet_NaN()}) {
+    ObjectGpu g{};
+    g.type = OBJECT_TRIANGLE;
+    g.p[4] = bad;
+    Aabb box;
+    CHECK_FALSE(objectBounds(g, &box));
+  }
+  // Vertices so large that the padded box leaves the floats.
+  ObjectGpu huge{};
+  huge.type = OBJECT_TRIANGLE;
+  huge.p[0] = std::numeric_limits<float>::max();
+  huge.p[3] = -std::numeric_limits<float>::max();
+  Aabb box;
+  CHECK_FALSE(objectBounds(huge, &box));
+}
 
 TEST_CASE("structure names parse, print and reject unknown names with the valid list", "[accel][builder]") {
   for (AccelKind kind : allAccelKinds()) CHECK(parseAccelKind(accelName(kind)) == kind);
