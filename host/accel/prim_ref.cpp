@@ -188,77 +188,44 @@ const MotionGpu& motionOf(const ObjectGpu& ob) {
 // A moving object's swept box and linear bounds (any of them may be null).
 bool movingBounds(const ObjectGpu& ob, Aabb* swept, Aabb* open, Aabb* close);
 
-// objectBounds of a static triangle (a mesh's, most of any scene's
-// primitives), the same arithmetic straight through: without the kind's
-// dispatch, and with the three axes' roundings in one pass.
-bool staticTriangleBounds(const float* p, Aabb* bounds) {
-  bool finite = true;
-  for (int k = 0; k < 9; ++k) finite &= std::isfinite(p[k]);
-  if (!finite) return false;
-  double lo[3], hi[3];
-  for (int a = 0; a < 3; ++a) {
-    lo[a] = std::min({p[a], p[3 + a], p[6 + a]});
-    hi[a] = std::max({p[a], p[3 + a], p[6 + a]});
-  }
-  const double pad = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) * 0x1p-20;
-  for (int a = 0; a < 3; ++a) {
-    bounds->lo[a] = nextFloatDown(roundDown(lo[a] - pad));
-    bounds->hi[a] = nextFloatUp(roundUp(hi[a] + pad));
-    finite &= std::isfinite(bounds->lo[a]) && std::isfinite(bounds->hi[a]);
-  }
-  return finite;
+// The kernels' float intersection routines may accept a hit a little outside
+// the exact shape (Moller-Trumbore on a ray grazing an edge, a sphere's
+// rounded discriminant): a static shape's box grows by 2^-20 of its size (and
+// one more float step, toAabb).
+double staticPad(const double lo[3], const double hi[3]) {
+  return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) * 0x1p-20;
 }
 
 }  // namespace
 
 bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
-  if (ob.type == OBJECT_TRIANGLE && !ob.has_transform) return staticTriangleBounds(ob.p, bounds);
   double lo[3], hi[3];
+  if (ob.type == OBJECT_TRIANGLE && !ob.has_transform) {
+    // Most of any scene's primitives (a mesh's): straight to the triangle's
+    // box, without looking its kind up.
+    return kTriangleKind.local_bounds(ob, nullptr, lo, hi) && toAabb(lo, hi, staticPad(lo, hi), bounds);
+  }
   if (!localBounds(ob, lo, hi)) return false;
-  if (ob.has_transform == OBJECT_MOVING) {
-    return movingBounds(ob, bounds, nullptr, nullptr);
-  } else if (ob.has_transform) {
-    // The device maps rays into object space with the float matrix; its inverse
-    // in double, padded, bounds the shape that matrix describes.
-    double m[12];
-    if (!invert(ob.world_to_object, m)) return false;
-    double wlo[3] = {INFINITY, INFINITY, INFINITY}, whi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int corner = 0; corner < 8; ++corner) {
-      double c[3] = {(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]};
-      for (int r = 0; r < 3; ++r) {
-        double w = m[4 * r] * c[0] + m[4 * r + 1] * c[1] + m[4 * r + 2] * c[2] + m[4 * r + 3];
-        wlo[r] = std::min(wlo[r], w);
-        whi[r] = std::max(whi[r], w);
-      }
-    }
-    double extent = 0, magnitude = 0;
-    for (int a = 0; a < 3; ++a) {
-      extent = std::max(extent, whi[a] - wlo[a]);
-      magnitude = std::max({magnitude, std::fabs(wlo[a]), std::fabs(whi[a])});
-    }
-    double pad = 1e-5 * (extent + magnitude) + 1e-30;
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = wlo[a] - pad;
-      hi[a] = whi[a] + pad;
-    }
-  } else {
-    // The kernels' float intersection routines may accept a hit a little
-    // outside the exact shape (Moller-Trumbore on a ray grazing an edge, a
-    // sphere's rounded discriminant): grow the box by 2^-20 of its size and
-    // one more float step.
-    double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-    double pad = extent * 0x1p-20;
-    for (int a = 0; a < 3; ++a) {
-      lo[a] -= pad;
-      hi[a] += pad;
-    }
-  }
+  if (ob.has_transform == OBJECT_MOVING) return movingBounds(ob, bounds, nullptr, nullptr);
+  if (!ob.has_transform) return toAabb(lo, hi, staticPad(lo, hi), bounds);
+  // The device maps rays into object space with the float matrix; its inverse
+  // in double, padded, bounds the shape that matrix describes.
+  double m[12];
+  if (!invert(ob.world_to_object, m)) return false;
+  Box3 world;
   for (int a = 0; a < 3; ++a) {
-    bounds->lo[a] = nextFloatDown(roundDown(lo[a]));
-    bounds->hi[a] = nextFloatUp(roundUp(hi[a]));
-    if (!std::isfinite(bounds->lo[a]) || !std::isfinite(bounds->hi[a])) return false;
+    world.lo[a] = INFINITY;
+    world.hi[a] = -INFINITY;
   }
-  return true;
+  for (int corner = 0; corner < 8; ++corner) {
+    double c[3] = {(corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]};
+    for (int r = 0; r < 3; ++r) {
+      double w = m[4 * r] * c[0] + m[4 * r + 1] * c[1] + m[4 * r + 2] * c[2] + m[4 * r + 3];
+      world.lo[r] = std::min(world.lo[r], w);
+      world.hi[r] = std::max(world.hi[r], w);
+    }
+  }
+  return toAabb(world.lo, world.hi, floatPad(world), bounds);
 }
 
 namespace {
