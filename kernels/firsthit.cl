@@ -3,8 +3,8 @@
  *
  *   firsthit_count_cells, firsthit_sort_samples: the batch's sample positions
  *     sorted by film pixel (a counting sort; scan.cl in between), each stored
- *     with its primary ray's direction (firsthit_pixel_starts or _counts, and
- *     firsthit_pixel_scatter, instead where they come in pixel order);
+ *     with its primary ray's direction; positions that come in pixel order
+ *     stay in it (firsthit_pixel_dirs stores their directions);
  *   firsthit_bound: per primitive, the film pixels its conservative bounds touch
  *     (sampling/film_bounds.h) and how many 8x8-pixel blocks they span;
  *   firsthit_emit: one (primitive, block) pair per such block, at offsets
@@ -12,9 +12,8 @@
  *   firsthit_raster: per pair, the ray test against every sample of the block's
  *     pixels inside the bounds, and an atomic minimum of (t, primitive) into the
  *     sample's depth + id entry;
- *   firsthit_resolve: per sample, the winner's t, u, v by the tracer's own
- *     prim_intersect; firsthit_resolve_cells the same for a whole batch in
- *     pixel order, cell by cell (the entries in the order the raster wrote them).
+ *   firsthit_resolve, firsthit_resolve_pixels: per sample, the winner's t, u,
+ *     v by the tracer's own prim_intersect.
  *
  * The ray tests are the tracer's (prim_intersect; for a plain triangle its
  * triangle_intersect split at the origin, which gives the same bits), so a
@@ -22,7 +21,8 @@
  * lower primitive index, as in a brute-force loop over the scene. The minimum
  * does not depend on the order of the atomics, so neither does the result.
  *
- * Entries are 2 uints per sample, all bits set when empty. With 64-bit atomics
+ * Entries are 2 uints per sample, all bits set when empty (set so where the
+ * sample's direction is stored). With 64-bit atomics
  * (PRISM_ZBUFFER_WIDE) an entry is one ulong, t's bits above the id: positive
  * floats order as their bits, so one atom_min keeps the nearest hit, lower id
  * first. Without, two raster passes: the first keeps the nearest t's bits in
@@ -48,14 +48,6 @@ inline int firsthit_cell(int x, int y, int width) {
   return block * FIRSTHIT_BLOCK * FIRSTHIT_BLOCK + (y % FIRSTHIT_BLOCK) * FIRSTHIT_BLOCK + x % FIRSTHIT_BLOCK;
 }
 
-/* The film pixel (x, y) of cell c, as int2. */
-inline int2 firsthit_cell_xy(int c, int width) {
-  int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
-  int block = c / (FIRSTHIT_BLOCK * FIRSTHIT_BLOCK), in = c % (FIRSTHIT_BLOCK * FIRSTHIT_BLOCK);
-  return (int2)((block % blocks_x) * FIRSTHIT_BLOCK + in % FIRSTHIT_BLOCK,
-                (block / blocks_x) * FIRSTHIT_BLOCK + in / FIRSTHIT_BLOCK);
-}
-
 /* The pixel of a film position (the far edges x = W, y = H to the last pixel). */
 inline int firsthit_position_cell(__global const CameraGpu* camera, float x, float y) {
   int w = camera->width, h = camera->height;
@@ -76,7 +68,7 @@ __kernel void firsthit_count_cells(__global const CameraGpu* camera, __global co
  * counting down), ready for the next batch. */
 __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global const float* xy, int in_xy, int count,
                                     __global const int* cell_start, __global int* cell_count,
-                                    __global float4* sorted, __global int* slot_of) {
+                                    __global float4* sorted, __global int* slot_of, __global uint2* entries) {
   int k = get_global_id(0);
   if (k >= count) return;
   float x = xy[2 * (in_xy + k)], y = xy[2 * (in_xy + k) + 1];
@@ -84,66 +76,33 @@ __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global c
   int slot = cell_start[cell] + atomic_dec(&cell_count[cell]) - 1;
   float3 d = camera_ray_dir(camera, x, y);
   sorted[slot] = (float4)(d.x, d.y, d.z, 0.0f);
+  entries[slot] = (uint2)(0xffffffffu);
   slot_of[k] = slot;
 }
 
 /* Positions in pixel order, spp to a pixel (the per-pixel sampling modes:
- * sample g of the image lies in pixel g / spp): the counts follow from the
- * numbering, and the slots need no atomics. cells: the padded block grid's.
- * (The host keeps first + count below 2^31, so int arithmetic serves.) */
-__kernel void firsthit_pixel_counts(int width, int height, int first, int count, int spp, int cells,
-                                    __global int* cell_count) {
-  int c = get_global_id(0);
-  if (c >= cells) return;
-  int2 xy = firsthit_cell_xy(c, width);
-  int n = 0;
-  if (xy.x < width && xy.y < height) {
-    long p = (long)xy.y * width + xy.x;
-    n = (int)(clamp((p + 1) * spp - first, 0L, (long)count) - clamp(p * spp - first, 0L, (long)count));
-  }
-  cell_count[c] = n;
-}
-
-/* The film's real pixels in cells before cell c (c up to the padded grid's
- * cell count): whole block rows above, the blocks to the left in c's block
- * row (as tall as the film lets them be), then c's own block row by row (as
- * wide as the film lets it be). */
-inline int firsthit_pixels_before(int c, int width, int height) {
-  int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
-  int block = c / (FIRSTHIT_BLOCK * FIRSTHIT_BLOCK), in = c % (FIRSTHIT_BLOCK * FIRSTHIT_BLOCK);
-  int row = block / blocks_x, column = block % blocks_x;
-  if (row * FIRSTHIT_BLOCK >= height) return width * height;
-  int h = min(FIRSTHIT_BLOCK, height - row * FIRSTHIT_BLOCK), w = min(FIRSTHIT_BLOCK, width - column * FIRSTHIT_BLOCK);
-  int iy = in / FIRSTHIT_BLOCK, ix = in % FIRSTHIT_BLOCK;
-  return row * FIRSTHIT_BLOCK * width + column * FIRSTHIT_BLOCK * h + min(iy, h) * w + (iy < h ? min(ix, w) : 0);
-}
-
-/* A batch of every sample of the image in pixel order: the cells' starts in
- * closed form, spp samples per real pixel (cell_start[cells] is the total),
- * where a part of the image needs counts and a scan. */
-__kernel void firsthit_pixel_starts(int width, int height, int spp, int cells, __global int* cell_start) {
-  int c = get_global_id(0);
-  if (c > cells) return;
-  cell_start[c] = spp * firsthit_pixels_before(c, width, height);
-}
-
-inline int firsthit_pixel_slot(int width, int first, int spp, __global const int* cell_start, int g) {
-  int p = g / spp;
-  int cell = firsthit_cell(p % width, p / width, width);
-  return cell_start[cell] + g - max(p * spp, first);
-}
-
-/* One work-item per sample g = first + k of the image, its slot known from
- * its number alone (firsthit_pixel_slot), so nothing records it. xy holds the
- * positions from sample xy_first on (a window of the frame's, or all). */
-__kernel void firsthit_pixel_scatter(__global const CameraGpu* camera, __global const float* xy, int xy_first,
-                                     int first, int count, int spp, __global const int* cell_start,
-                                     __global float4* sorted) {
+ * sample g of the image lies in pixel g / spp): they need no sorting, since a
+ * row of a block's pixels is already one run of samples. Slot k is the batch's
+ * sample k; its direction is stored, its entry emptied. */
+__kernel void firsthit_pixel_dirs(__global const CameraGpu* camera, __global const float* xy, int in_xy, int count,
+                                  __global float4* sorted, __global uint2* entries) {
   int k = get_global_id(0);
   if (k >= count) return;
-  int g = first + k;
-  float3 d = camera_ray_dir(camera, xy[2 * (g - xy_first)], xy[2 * (g - xy_first) + 1]);
-  sorted[firsthit_pixel_slot(camera->width, first, spp, cell_start, g)] = (float4)(d.x, d.y, d.z, 0.0f);
+  float3 d = camera_ray_dir(camera, xy[2 * (in_xy + k)], xy[2 * (in_xy + k) + 1]);
+  sorted[k] = (float4)(d.x, d.y, d.z, 0.0f);
+  entries[k] = (uint2)(0xffffffffu);
+}
+
+/* The slots [begin, end) of the samples in pixels x0..x1 of film row y: in
+ * cell order (spp == 0) from the sort's cell starts; in pixel order, spp to a
+ * pixel, in closed form, the batch's samples from number `first` on taking
+ * slots 0, 1, ... (a row's run cut to the batch's count). */
+inline int2 firsthit_row_slots(int x0, int x1, int y, int width, int spp, int first, int count,
+                               __global const int* cell_start) {
+  if (spp == 0) return (int2)(cell_start[firsthit_cell(x0, y, width)], cell_start[firsthit_cell(x1, y, width) + 1]);
+  long row = (long)y * width;
+  long begin = (row + x0) * spp - first, end = (row + x1 + 1) * spp - first;
+  return (int2)((int)clamp(begin, 0L, (long)count), (int)clamp(end, 0L, (long)count));
 }
 
 /* A plain triangle (no transform: a static mesh's, or a triangle record) is
@@ -223,8 +182,9 @@ inline void firsthit_keep(__global uint* entries, int slot, float t, int prim, i
 
 __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS,
                               __global const int* other_prims, __global const int4* cells, int pair_count,
-                              __global const int2* pairs, __global const int* cell_start,
-                              __global const float4* sorted, int pass, __global uint* entries) {
+                              __global const int2* pairs, int spp, int first, int count,
+                              __global const int* cell_start, __global const float4* sorted, int pass,
+                              __global uint* entries) {
   const Geometry g = GEOMETRY_INIT;
   const int prims = g.prim_count;
   int k = get_global_id(0);
@@ -248,8 +208,9 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
     TriangleFromOrigin tri = triangle_from_origin(o, v0, v1, v2);
     const float e2_qv = tri_dot(tri.e2, tri.qv);
     for (int y = y0; y <= y1; ++y) {
-      int end = cell_start[firsthit_cell(x1, y, width) + 1];
-      for (int n = cell_start[firsthit_cell(x0, y, width)]; n < end; n += 4) {
+      int2 run = firsthit_row_slots(x0, x1, y, width, spp, first, count, cell_start);
+      int end = run.y;
+      for (int n = run.x; n < end; n += 4) {
         int last = end - 1;
         float4 s0 = sorted[n], s1 = sorted[min(n + 1, last)], s2 = sorted[min(n + 2, last)],
                s3 = sorted[min(n + 3, last)];
@@ -274,8 +235,8 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
     }
   } else {
     for (int y = y0; y <= y1; ++y) {
-      int end = cell_start[firsthit_cell(x1, y, width) + 1];
-      for (int n = cell_start[firsthit_cell(x0, y, width)]; n < end; ++n) {
+      int2 run = firsthit_row_slots(x0, x1, y, width, spp, first, count, cell_start);
+      for (int n = run.x; n < run.y; ++n) {
         float4 s = sorted[n];
         float t, u, v;
         if (prim_intersect(&g, prim, o, (float3)(s.x, s.y, s.z), time, 0.0f, PRISM_INF, &t, &u, &v))
@@ -313,8 +274,8 @@ inline HitGpu firsthit_slot_hit(const Geometry* g, __global const CameraGpu* cam
   return hit;
 }
 
-/* A batch in any order, a chunk at a time: first is the chunk's first sample
- * within the batch, slot_of has the slots. */
+/* A chunk of the batch: first is the chunk's first sample within the batch;
+ * slot_of has the slots of a sorted batch. */
 __kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
                                __global const int* slot_of, __global const float4* sorted,
                                __global const uint* entries, int first, __global HitGpu* hits) {
@@ -324,21 +285,12 @@ __kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL
   hits[k] = firsthit_slot_hit(&g, camera, sorted, entries, slot_of[first + k]);
 }
 
-/* A batch in pixel order (spp > 0), resolved whole, cell by cell: the entries
- * and directions are read in the order the raster wrote them, and each hit goes
- * to its sample's place in the batch. */
-__kernel void firsthit_resolve_cells(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int cell_first,
-                                     int cells, int spp, int batch_first, __global const int* cell_start,
-                                     __global const float4* sorted, __global const uint* entries,
-                                     __global HitGpu* hits) {
+/* The same for a batch in pixel order, whose sample k is in slot k. */
+__kernel void firsthit_resolve_pixels(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
+                                      __global const float4* sorted, __global const uint* entries, int first,
+                                      __global HitGpu* hits) {
   const Geometry g = GEOMETRY_INIT;
-  if (get_global_id(0) >= cells) return;
-  int c = cell_first + (int)get_global_id(0); /* the batch's block rows only */
-  int begin = cell_start[c], end = cell_start[c + 1];
-  if (begin == end) return;
-  int2 xy = firsthit_cell_xy(c, camera->width);
-  int p = xy.y * camera->width + xy.x;
-  /* slot = cell_start[c] + g - max(p * spp, batch_first) (firsthit_pixel_slot) */
-  int base = max(p * spp, batch_first) - batch_first - begin;
-  for (int slot = begin; slot < end; ++slot) hits[base + slot] = firsthit_slot_hit(&g, camera, sorted, entries, slot);
+  int k = get_global_id(0);
+  if (k >= count) return;
+  hits[k] = firsthit_slot_hit(&g, camera, sorted, entries, first + k);
 }

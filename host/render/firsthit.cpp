@@ -36,14 +36,12 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   options += " " + primitive_options;
   m_count_cells = m_context.kernel("firsthit.cl", "firsthit_count_cells", options);
   m_sort_samples = m_context.kernel("firsthit.cl", "firsthit_sort_samples", options);
-  m_pixel_counts = m_context.kernel("firsthit.cl", "firsthit_pixel_counts", options);
-  m_pixel_starts = m_context.kernel("firsthit.cl", "firsthit_pixel_starts", options);
-  m_pixel_scatter = m_context.kernel("firsthit.cl", "firsthit_pixel_scatter", options);
+  m_pixel_dirs = m_context.kernel("firsthit.cl", "firsthit_pixel_dirs", options);
   m_bound = m_context.kernel("firsthit.cl", "firsthit_bound", options);
   m_emit = m_context.kernel("firsthit.cl", "firsthit_emit", options);
   m_raster = m_context.kernel("firsthit.cl", "firsthit_raster", options);
   m_resolve = m_context.kernel("firsthit.cl", "firsthit_resolve", options);
-  m_resolve_cells = m_context.kernel("firsthit.cl", "firsthit_resolve_cells", options);
+  m_resolve_pixels = m_context.kernel("firsthit.cl", "firsthit_resolve_pixels", options);
 
   m_camera = Buffer(m_context, sizeof(CameraGpu));
   m_camera.write(&c, sizeof(CameraGpu));
@@ -90,7 +88,6 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
                              size_t count, int pixel_spp) {
   if (!m_raster) throw std::logic_error("FirstHitPass::rasterize before prepare");
   m_batch = 0;  // until this batch is rasterised
-  m_batch_resolved = false;
   if (count == 0) return;
   if (first + count > static_cast<size_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::invalid_argument("first hit zbuffer: more than 2^31 - 1 positions in one batch");
@@ -99,44 +96,14 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   const cl_int in_xy = static_cast<cl_int>(first - xy_first);  // the batch's first position in xy
   const size_t cells = cellCount();
 
-  // The samples in cell order (kernels/firsthit.cl).
+  // The samples' directions and empty entries, in cell order or, where they
+  // come in pixel order, in that order (kernels/firsthit.cl).
   m_sorted.reserve(m_context, count * 4 * sizeof(float));
-  if (pixel_spp <= 0) m_slot_of.reserve(m_context, count * sizeof(std::int32_t));
   m_entries.reserve(m_context, count * 2 * sizeof(std::uint32_t));
   if (pixel_spp > 0) {
-    if (first == 0 && count == static_cast<size_t>(m_width) * static_cast<size_t>(m_height) * pixel_spp) {
-      m_context.launch(m_pixel_starts)
-          .arg(static_cast<cl_int>(m_width))
-          .arg(static_cast<cl_int>(m_height))
-          .arg(static_cast<cl_int>(pixel_spp))
-          .arg(static_cast<cl_int>(cells))
-          .arg(m_cell_start)
-          .run(cells + 1);
-    } else {
-      m_context.launch(m_pixel_counts)
-          .arg(static_cast<cl_int>(m_width))
-          .arg(static_cast<cl_int>(m_height))
-          .arg(at)
-          .arg(n)
-          .arg(static_cast<cl_int>(pixel_spp))
-          .arg(static_cast<cl_int>(cells))
-          .arg(m_cell_count)
-          .run(cells);
-      m_scan.exclusive(m_cell_count, cells, m_cell_start);
-      const std::int32_t zero = 0;
-      m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));  // as the sort path leaves it
-    }
-    m_context.launch(m_pixel_scatter)
-        .arg(m_camera)
-        .arg(xy)
-        .arg(static_cast<cl_int>(xy_first))
-        .arg(at)
-        .arg(n)
-        .arg(static_cast<cl_int>(pixel_spp))
-        .arg(m_cell_start)
-        .arg(m_sorted)
-        .run(count);
+    m_context.launch(m_pixel_dirs).arg(m_camera).arg(xy).arg(in_xy).arg(n).arg(m_sorted).arg(m_entries).run(count);
   } else {
+    m_slot_of.reserve(m_context, count * sizeof(std::int32_t));
     m_context.launch(m_count_cells).arg(m_camera).arg(xy).arg(in_xy).arg(n).arg(m_cell_count).run(count);
     m_scan.exclusive(m_cell_count, cells, m_cell_start);
     m_context.launch(m_sort_samples)
@@ -148,12 +115,10 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(m_cell_count)
         .arg(m_sorted)
         .arg(m_slot_of)
+        .arg(m_entries)
         .run(count);
   }
-  const std::uint32_t empty = 0xffffffffu;
-  m_entries.fill(&empty, sizeof empty, count * 2 * sizeof(std::uint32_t));
   m_pixel_spp = pixel_spp;
-  m_batch_first = first;
 
   // The primitives' film bounds and their (primitive, block) pairs.
   const size_t items = m_prims + m_others;
@@ -186,6 +151,9 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(m_cells)
         .arg(static_cast<cl_int>(total))
         .arg(m_pairs)
+        .arg(static_cast<cl_int>(std::max(pixel_spp, 0)))
+        .arg(at)
+        .arg(n)
         .arg(m_cell_start)
         .arg(m_sorted)
         .arg(static_cast<cl_int>(pass))
@@ -197,17 +165,16 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
 void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t count, Buffer& hits) {
   if (count == 0) return;
   if (first + count > m_batch) throw std::logic_error("FirstHitPass::resolve outside the rasterised batch");
-  if (m_pixel_spp > 0) {
-    // In pixel order the whole batch is resolved at its first chunk, cell by
-    // cell (its entries read in the order the raster wrote them: per sample, in
-    // the chunk's order, they were a cache miss each), and each chunk copies its part.
-    if (first == 0 && count == m_batch) return resolveBatch(geometry, hits);
-    if (!m_batch_resolved) {
-      m_batch_hits.reserve(m_context, m_batch * sizeof(HitGpu));
-      resolveBatch(geometry, m_batch_hits);
-      m_batch_resolved = true;
-    }
-    m_batch_hits.copyTo(hits, count * sizeof(HitGpu), first * sizeof(HitGpu), 0);
+  if (m_pixel_spp > 0) {  // sample k of the batch in slot k
+    KernelLaunch resolve = m_context.launch(m_resolve_pixels);
+    resolve.arg(m_camera);
+    geometry.bind(resolve)
+        .arg(static_cast<cl_int>(count))
+        .arg(m_sorted)
+        .arg(m_entries)
+        .arg(static_cast<cl_int>(first))
+        .arg(hits)
+        .run(count);
     return;
   }
   KernelLaunch resolve = m_context.launch(m_resolve);
@@ -222,28 +189,6 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
       .run(count);
 }
 
-void FirstHitPass::resolveBatch(const GeometryBuffers& geometry, Buffer& hits) {
-  // The block rows of the batch's pixels: a frame of many batches would
-  // otherwise launch every cell of the film for each.
-  constexpr size_t kBlock = 8;  // FIRSTHIT_BLOCK
-  const size_t spp = static_cast<size_t>(m_pixel_spp), width = static_cast<size_t>(m_width);
-  const size_t first_row = m_batch_first / spp / width / kBlock, last_row = (m_batch_first + m_batch - 1) / spp / width / kBlock;
-  const size_t row_cells = (width + kBlock - 1) / kBlock * kBlock * kBlock;
-  const size_t cells = (last_row - first_row + 1) * row_cells;
-  KernelLaunch launch = m_context.launch(m_resolve_cells);
-  launch.arg(m_camera);
-  geometry.bind(launch)
-      .arg(static_cast<cl_int>(first_row * row_cells))
-      .arg(static_cast<cl_int>(cells))
-      .arg(static_cast<cl_int>(m_pixel_spp))
-      .arg(static_cast<cl_int>(m_batch_first))
-      .arg(m_cell_start)
-      .arg(m_sorted)
-      .arg(m_entries)
-      .arg(hits)
-      .run(cells);
-}
-
 size_t FirstHitPass::cellCount() const {
   constexpr size_t kBlock = 8;  // FIRSTHIT_BLOCK
   return (static_cast<size_t>(m_width) + kBlock - 1) / kBlock * ((static_cast<size_t>(m_height) + kBlock - 1) / kBlock) *
@@ -256,13 +201,13 @@ void FirstHitPass::run(const GeometryBuffers& geometry, const Buffer& xy, size_t
 }
 
 size_t FirstHitPass::batchBytes() const {
-  return m_sorted.bytes() + m_slot_of.bytes() + m_entries.bytes() + m_batch_hits.bytes();
+  return m_sorted.bytes() + m_slot_of.bytes() + m_entries.bytes();
 }
 
 size_t FirstHitPass::deviceBytes() const {
   size_t bytes = 0;
   for (const Buffer* b : {&m_camera, &m_other_prims, &m_other_boxes, &m_cell_count, &m_cell_start, &m_sorted, &m_slot_of,
-                          &m_entries, &m_batch_hits, &m_cells, &m_block_count, &m_pair_start, &m_pairs})
+                          &m_entries, &m_cells, &m_block_count, &m_pair_start, &m_pairs})
     bytes += b->bytes();
   return bytes;
 }

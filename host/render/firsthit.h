@@ -1,12 +1,12 @@
 // The first-hit (Z-buffer) pass for a pinhole camera: per sample position, the
 // depth and id of the nearest primitive, found by scan conversion on the device
 // instead of tracing through an acceleration structure (kernels/firsthit.cl).
-// Per batch of positions: the samples are sorted by film pixel, every primitive
+// Per batch of positions: the samples are sorted by film pixel (unless they
+// come in pixel order), every primitive
 // is projected to conservative film bounds, and each (primitive, 8x8-pixel
 // block) pair tests the samples of its pixels with the tracer's own ray test,
 // keeping the nearest (t, primitive) per sample by an atomic minimum; a resolve
-// then gives the hits (per chunk, or for a batch in pixel order all at once,
-// cell by cell, each chunk copying its part). Cameras with depth of field or motion blur need
+// then gives the hits, a chunk at a time. Cameras with depth of field or motion blur need
 // traced primary rays instead (docs/sampling.md).
 #pragma once
 
@@ -59,7 +59,7 @@ class FirstHitPass {
 
   const FirstHitStats& stats() const { return m_stats; }
   // Device memory it holds now, and the part of it that grows with a batch's
-  // samples (directions, slots, entries, hits).
+  // samples (directions, slots, entries).
   std::size_t deviceBytes() const;
   std::size_t batchBytes() const;
 
@@ -67,22 +67,18 @@ class FirstHitPass {
   Context& m_context;
   ZBufferAtomics m_atomics;
   DeviceScan m_scan;
-  cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_counts = nullptr,
-            m_pixel_starts = nullptr, m_pixel_scatter = nullptr, m_bound = nullptr, m_emit = nullptr,
-            m_raster = nullptr, m_resolve = nullptr, m_resolve_cells = nullptr;
+  cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_dirs = nullptr, m_bound = nullptr,
+            m_emit = nullptr, m_raster = nullptr, m_resolve = nullptr, m_resolve_pixels = nullptr;
   bool m_wide = false;
   int m_width = 0, m_height = 0;
-  std::size_t m_prims = 0, m_others = 0, m_batch = 0, m_batch_first = 0;
+  std::size_t m_prims = 0, m_others = 0, m_batch = 0;
   int m_pixel_spp = 0;  // the last batch's pixel_spp
-  bool m_batch_resolved = false;  // m_batch_hits holds the last batch's hits (pixel order)
   FirstHitStats m_stats;
   // Cells of the film's 8x8 blocks, the last row and column of blocks padded.
   std::size_t cellCount() const;
-  // Every hit of the last batch, which came in pixel order, into hits[k] for position k of the batch.
-  void resolveBatch(const GeometryBuffers& geometry, Buffer& hits);
 
   Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_sorted, m_slot_of, m_entries,
-      m_batch_hits, m_cells, m_block_count, m_pair_start, m_pairs;
+      m_cells, m_block_count, m_pair_start, m_pairs;
 };
 
 // `--first-hit auto`'s choice: whether the Z-buffer should beat tracing the
