@@ -132,10 +132,12 @@ inline int firsthit_blocks(int4 r) {
 }
 
 /* block_count[item]: the blocks its cells span (0 when culled); the host turns
- * them into pair_start by an exclusive scan. */
+ * them into pair_start by an exclusive scan. Cells are cut to the film rows
+ * row_first..row_last that hold the batch's samples (a batch in pixel order
+ * covers a band of the film; any other, all of it). */
 __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS,
                              __global const int* other_prims, __global const float* other_boxes, int others,
-                             __global int4* cells, __global int* block_count) {
+                             int row_first, int row_last, __global int4* cells, __global int* block_count) {
   const Geometry g = GEOMETRY_INIT;
   const int prims = g.prim_count;
   int item = get_global_id(0);
@@ -153,8 +155,9 @@ __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_P
       film_hull_add(&c, (float3)(b[(i & 1) ? 3 : 0], b[(i & 2) ? 4 : 1], b[(i & 4) ? 5 : 2]), &hull);
   }
   int4 bounded;
-  if ((hull.front > 0 || hull.near > 0 || hull.behind > 0) && film_hull_cells(&c, &hull, &bounded) != FILM_BOUNDS_CULLED)
-    r = bounded;
+  if ((hull.front > 0 || hull.near > 0 || hull.behind > 0) && film_hull_cells(&c, &hull, &bounded) != FILM_BOUNDS_CULLED &&
+      bounded.y <= row_last && bounded.w >= row_first)
+    r = (int4)(bounded.x, max(bounded.y, row_first), bounded.z, min(bounded.w, row_last));
   cells[item] = r;
   block_count[item] = firsthit_blocks(r);
 }

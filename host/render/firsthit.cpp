@@ -120,7 +120,14 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   }
   m_pixel_spp = pixel_spp;
 
-  // The primitives' film bounds and their (primitive, block) pairs.
+  // The primitives' film bounds, cut to the rows of the batch's pixels, and
+  // their (primitive, block) pairs.
+  size_t row_first = 0, row_last = static_cast<size_t>(m_height) - 1;
+  if (pixel_spp > 0) {
+    const size_t spp = static_cast<size_t>(pixel_spp), width = static_cast<size_t>(m_width);
+    row_first = first / spp / width;
+    row_last = std::min(row_last, (first + count - 1) / spp / width);
+  }
   const size_t items = m_prims + m_others;
   KernelLaunch bound = m_context.launch(m_bound);
   bound.arg(m_camera);
@@ -128,6 +135,8 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
       .arg(m_other_prims)
       .arg(m_other_boxes)
       .arg(static_cast<cl_int>(m_others))
+      .arg(static_cast<cl_int>(row_first))
+      .arg(static_cast<cl_int>(row_last))
       .arg(m_cells)
       .arg(m_block_count)
       .run(items);
