@@ -21,8 +21,7 @@
  * lower primitive index, as in a brute-force loop over the scene. The minimum
  * does not depend on the order of the atomics, so neither does the result.
  *
- * Entries are 2 uints per sample, all bits set when empty (set so where the
- * sample's direction is stored). With 64-bit atomics
+ * Entries are 2 uints per sample, all bits set when empty (firsthit_place). With 64-bit atomics
  * (PRISM_ZBUFFER_WIDE) an entry is one ulong, t's bits above the id: positive
  * floats order as their bits, so one atom_min keeps the nearest hit, lower id
  * first. Without, two raster passes: the first keeps the nearest t's bits in
@@ -40,8 +39,8 @@
 
 /* Cells (pixels) are numbered block by block, 8x8 pixels each, row by row
  * inside a block, so the samples of a block lie together once sorted by cell:
- * a (primitive, block) pair reads one run of them and updates one run of
- * entries. Blocks past the film's edge hold empty cells. */
+ * a (primitive, block) pair reads one run of them per row of the block, as it
+ * does of samples in pixel order. Blocks past the film's edge hold empty cells. */
 inline int firsthit_cell(int x, int y, int width) {
   int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
   int block = (y / FIRSTHIT_BLOCK) * blocks_x + x / FIRSTHIT_BLOCK;
@@ -52,6 +51,14 @@ inline int firsthit_cell(int x, int y, int width) {
 inline int firsthit_position_cell(__global const CameraGpu* camera, float x, float y) {
   int w = camera->width, h = camera->height;
   return firsthit_cell((int)floor(clamp(x, 0.0f, (float)w - 1.0f)), (int)floor(clamp(y, 0.0f, (float)h - 1.0f)), w);
+}
+
+/* Sample (x, y) into `slot`: its primary ray's direction, and an empty entry. */
+inline void firsthit_place(__global const CameraGpu* camera, float x, float y, int slot, __global float4* sorted,
+                           __global uint2* entries) {
+  float3 d = camera_ray_dir(camera, x, y);
+  sorted[slot] = (float4)(d.x, d.y, d.z, 0.0f);
+  entries[slot] = (uint2)(0xffffffffu);
 }
 
 /* in_xy: where the batch's first position lies in xy. */
@@ -74,9 +81,7 @@ __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global c
   float x = xy[2 * (in_xy + k)], y = xy[2 * (in_xy + k) + 1];
   int cell = firsthit_position_cell(camera, x, y);
   int slot = cell_start[cell] + atomic_dec(&cell_count[cell]) - 1;
-  float3 d = camera_ray_dir(camera, x, y);
-  sorted[slot] = (float4)(d.x, d.y, d.z, 0.0f);
-  entries[slot] = (uint2)(0xffffffffu);
+  firsthit_place(camera, x, y, slot, sorted, entries);
   slot_of[k] = slot;
 }
 
@@ -88,9 +93,7 @@ __kernel void firsthit_pixel_dirs(__global const CameraGpu* camera, __global con
                                   __global float4* sorted, __global uint2* entries) {
   int k = get_global_id(0);
   if (k >= count) return;
-  float3 d = camera_ray_dir(camera, xy[2 * (in_xy + k)], xy[2 * (in_xy + k) + 1]);
-  sorted[k] = (float4)(d.x, d.y, d.z, 0.0f);
-  entries[k] = (uint2)(0xffffffffu);
+  firsthit_place(camera, xy[2 * (in_xy + k)], xy[2 * (in_xy + k) + 1], k, sorted, entries);
 }
 
 /* The slots [begin, end) of the samples in pixels x0..x1 of film row y: in

@@ -239,10 +239,10 @@ TEST_CASE("first hits agree with traced rays when primitives cross the camera pl
 }
 
 // The 3,851-triangle bunny filling the middle of an 80x60 film, a sphere beside it.
-static Scene bunnyAndSphere() {
+static Scene bunnyAndSphere(int width = 80) {
   prism::SharedMesh bunny = prism_test::loadTestMesh("bunny/bun_zipper_res3.ply");
   REQUIRE(bunny->triangleCount() == 3851);
-  Scene scene = emptyScene({0, 1.6, 4}, {0, 1.0, 0}, 35, 80, 60);
+  Scene scene = emptyScene({0, 1.6, 4}, {0, 1.0, 0}, 35, width, 60);
   Object mesh;
   mesh.type = ObjectType::Mesh;
   mesh.mesh = bunny;
@@ -261,45 +261,52 @@ TEST_CASE("first hits agree with traced rays on a real mesh", "[firsthit][mesh]"
 TEST_CASE("a batch in pixel order, begun and ended mid-pixel and resolved in chunks, gives the hits of sorting it",
           "[firsthit][mesh]") {
   // The renders' path: a batch of the frame's samples from `first` on, in a
-  // window of positions that starts before it (xy_first), resolved chunk by
-  // chunk from the batch's hits (firsthit_resolve_cells), against the same
-  // positions sorted by the counting sort and resolved sample by sample.
-  const Scene scene = bunnyAndSphere();
+  // window of positions that starts before it (xy_first), kept in pixel order
+  // and resolved chunk by chunk (firsthit_resolve_pixels), against the same
+  // positions sorted by the counting sort and resolved sample by sample; with
+  // both kinds of atomics, on a film whose width is not a multiple of the
+  // raster's 8-pixel blocks.
+  constexpr int kWidth = 83;
+  const Scene scene = bunnyAndSphere(kWidth);
   RenderOptions options = RenderOptions::fromScene(scene);
   const GpuScene gpu = flattenScene(scene, options);
   SamplingOptions random;
   random.mode = AaMode::Random;
   random.spp = 3;
-  const std::vector<float> all = samplePositions(sharedContext(), random, 80, 60, 5);  // 14,400
+  const std::vector<float> all = samplePositions(sharedContext(), random, kWidth, 60, 5);  // 14,940
   // From pixel (40, 30), on the bunny, its second sample, to a pixel's second sample.
-  const size_t xy_first = 1000, first = 3 * (30 * 80 + 40) + 1, count = 4999;
+  const size_t xy_first = 1000, first = 3 * (30 * kWidth + 40) + 1, count = 4999;
   REQUIRE((first + count) % 3 != 0);
   Context& context = sharedContext();
-  FirstHitPass pass(context);
-  pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
   GeometryBuffers geometry(context, gpu);
   Buffer xy(context, (all.size() - 2 * xy_first) * sizeof(float));
   xy.write(all.data() + 2 * xy_first, (all.size() - 2 * xy_first) * sizeof(float));
   Buffer hits(context, count * sizeof(HitGpu));
 
-  pass.rasterize(geometry, xy, xy_first, first, count, 0);
-  pass.resolve(geometry, 0, count, hits);
-  const std::vector<HitGpu> sorted = hits.readVector<HitGpu>(count);
+  for (ZBufferAtomics atomics : {ZBufferAtomics::Wide, ZBufferAtomics::Narrow}) {
+    if (atomics == ZBufferAtomics::Wide && !context.device().hasExtension("cl_khr_int64_extended_atomics")) continue;
+    INFO((atomics == ZBufferAtomics::Wide ? "64-bit" : "32-bit") << " atomics");
+    FirstHitPass pass(context, atomics);
+    pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
+    pass.rasterize(geometry, xy, xy_first, first, count, 0);
+    pass.resolve(geometry, 0, count, hits);
+    const std::vector<HitGpu> sorted = hits.readVector<HitGpu>(count);
 
-  pass.rasterize(geometry, xy, xy_first, first, count, 3);
-  std::vector<HitGpu> chunked;
-  for (size_t at = 0; at < count; at += 777) {
-    const size_t n = std::min<size_t>(777, count - at);
-    pass.resolve(geometry, at, n, hits);
-    const std::vector<HitGpu> part = hits.readVector<HitGpu>(n);
-    chunked.insert(chunked.end(), part.begin(), part.end());
+    pass.rasterize(geometry, xy, xy_first, first, count, 3);
+    std::vector<HitGpu> chunked;
+    for (size_t at = 0; at < count; at += 777) {
+      const size_t n = std::min<size_t>(777, count - at);
+      pass.resolve(geometry, at, n, hits);
+      const std::vector<HitGpu> part = hits.readVector<HitGpu>(n);
+      chunked.insert(chunked.end(), part.begin(), part.end());
+    }
+    REQUIRE(chunked.size() == sorted.size());
+    REQUIRE(sorted.front().prim >= 0);  // the split pixels' samples are hits, so their places are checked
+    CHECK(std::memcmp(chunked.data(), sorted.data(), sorted.size() * sizeof(HitGpu)) == 0);
+    size_t hit = 0;
+    for (const HitGpu& h : sorted) hit += h.prim >= 0;
+    CHECK(hit > count / 4);  // the bunny and the sphere fill part of the frame
   }
-  REQUIRE(chunked.size() == sorted.size());
-  REQUIRE(sorted.front().prim >= 0);  // the split pixels' samples are hits, so their places are checked
-  CHECK(std::memcmp(chunked.data(), sorted.data(), sorted.size() * sizeof(HitGpu)) == 0);
-  size_t hit = 0;
-  for (const HitGpu& h : sorted) hit += h.prim >= 0;
-  CHECK(hit > count / 4);  // the bunny and the sphere fill part of the frame
 }
 
 TEST_CASE("first hits on a million triangles match the closed form", "[firsthit][scale]") {
