@@ -9,7 +9,9 @@
  * make the image unbounded: the whole film. A hull wholly behind the plane is
  * culled. The pad is 0.1 pixel plus a bound on the float error of the
  * projection itself (about 17 ulp of its terms); the error of a ray direction
- * (about 1e-4 pixel) and of the intersection tests is far below it. */
+ * (about 1e-4 pixel) and of the intersection tests is far below it.
+ * The functions are PRISM_HOT: PoCL otherwise calls them through pointers to
+ * the projector and the hull, once per vertex. */
 #ifndef PRISM_SAMPLING_FILM_BOUNDS_H
 #define PRISM_SAMPLING_FILM_BOUNDS_H
 
@@ -25,7 +27,7 @@ typedef struct {
   float rr, uu, r_len, u_len, w, h;
 } FilmProjector;
 
-inline FilmProjector film_projector(__global const CameraGpu* camera) {
+PRISM_HOT FilmProjector film_projector(__global const CameraGpu* camera) {
   FilmProjector p;
   p.o = load3g(camera->origin);
   p.f = load3g(camera->forward);
@@ -45,7 +47,7 @@ typedef struct {
   int behind, near, front;
 } FilmHull;
 
-inline FilmHull film_hull_empty(void) {
+PRISM_HOT FilmHull film_hull_empty(void) {
   FilmHull h;
   h.box = (float4)(INFINITY, INFINITY, -INFINITY, -INFINITY);
   h.behind = 0;
@@ -54,7 +56,7 @@ inline FilmHull film_hull_empty(void) {
   return h;
 }
 
-inline void film_hull_add(const FilmProjector* c, float3 p, FilmHull* h) {
+PRISM_HOT void film_hull_add(const FilmProjector* c, float3 p, FilmHull* h) {
   float3 v = p - c->o;
   float len = fabs(v.x) + fabs(v.y) + fabs(v.z); /* >= |v| */
   float z = sb_dot(v, c->f);
@@ -82,7 +84,7 @@ inline void film_hull_add(const FilmProjector* c, float3 p, FilmHull* h) {
 
 /* The hull's verdict; for FILM_BOUNDS_FINITE, *cells is the inclusive rectangle of
  * film pixels (x0, y0, x1, y1) its bounds touch, clamped to the film. */
-inline int film_hull_cells(const FilmProjector* c, const FilmHull* h, int4* cells) {
+PRISM_HOT int film_hull_cells(const FilmProjector* c, const FilmHull* h, int4* cells) {
   int w = (int)c->w, hgt = (int)c->h;
   if (h->behind > 0 && h->near == 0 && h->front == 0) return FILM_BOUNDS_CULLED;
   if (h->near > 0 || (h->behind > 0 && h->front > 0) || !(isfinite(h->box.x) && isfinite(h->box.y) &&
