@@ -12,8 +12,8 @@
  *   firsthit_raster: per pair, the ray test against every sample of the block's
  *     pixels inside the bounds, and an atomic minimum of (t, primitive) into the
  *     sample's depth + id entry;
- *   firsthit_resolve, firsthit_resolve_pixels: per sample, the winner's t, u,
- *     v by the tracer's own prim_intersect.
+ *   firsthit_resolve: per sample, the winner's t, u, v by the tracer's own
+ *     prim_intersect.
  *
  * The ray tests are the tracer's (prim_intersect; for a plain triangle its
  * triangle_intersect split at the origin, which gives the same bits), so a
@@ -280,23 +280,15 @@ inline HitGpu firsthit_slot_hit(const Geometry* g, __global const CameraGpu* cam
   return hit;
 }
 
-/* A chunk of the batch: first is the chunk's first sample within the batch;
- * slot_of has the slots of a sorted batch. */
-__kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
+/* A chunk of the batch: first is the chunk's first sample within the batch,
+ * whose slots are slot_of's (a sorted batch) or, in_order, the samples' own
+ * numbers (a batch in pixel order). */
+__kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count, int in_order,
                                __global const int* slot_of, __global const float4* sorted,
                                __global const uint* entries, int first, __global HitGpu* hits) {
   const Geometry g = GEOMETRY_INIT;
   int k = get_global_id(0);
   if (k >= count) return;
-  hits[k] = firsthit_slot_hit(&g, camera, sorted, entries, slot_of[first + k]);
-}
-
-/* The same for a batch in pixel order, whose sample k is in slot k. */
-__kernel void firsthit_resolve_pixels(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count,
-                                      __global const float4* sorted, __global const uint* entries, int first,
-                                      __global HitGpu* hits) {
-  const Geometry g = GEOMETRY_INIT;
-  int k = get_global_id(0);
-  if (k >= count) return;
-  hits[k] = firsthit_slot_hit(&g, camera, sorted, entries, first + k);
+  int slot = in_order ? first + k : slot_of[first + k];
+  hits[k] = firsthit_slot_hit(&g, camera, sorted, entries, slot);
 }

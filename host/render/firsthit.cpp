@@ -41,7 +41,6 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_emit = m_context.kernel("firsthit.cl", "firsthit_emit", options);
   m_raster = m_context.kernel("firsthit.cl", "firsthit_raster", options);
   m_resolve = m_context.kernel("firsthit.cl", "firsthit_resolve", options);
-  m_resolve_pixels = m_context.kernel("firsthit.cl", "firsthit_resolve_pixels", options);
 
   m_camera = Buffer(m_context, sizeof(CameraGpu));
   m_camera.write(&c, sizeof(CameraGpu));
@@ -74,6 +73,7 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   const std::int32_t zero = 0;
   m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));  // each batch leaves it zero again
   m_cell_start = Buffer(m_context, (cells + 1) * sizeof(std::int32_t));
+  m_slot_of = Buffer(m_context, sizeof(std::int32_t));  // bound, unread, until a batch needs sorting
   const size_t items = m_prims + m_others;
   m_cells = Buffer(m_context, std::max<size_t>(1, items) * 4 * sizeof(std::int32_t));
   m_block_count = Buffer(m_context, std::max<size_t>(1, items) * sizeof(std::int32_t));
@@ -174,22 +174,11 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
 void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t count, Buffer& hits) {
   if (count == 0) return;
   if (first + count > m_batch) throw std::logic_error("FirstHitPass::resolve outside the rasterised batch");
-  if (m_pixel_spp > 0) {  // sample k of the batch in slot k
-    KernelLaunch resolve = m_context.launch(m_resolve_pixels);
-    resolve.arg(m_camera);
-    geometry.bind(resolve)
-        .arg(static_cast<cl_int>(count))
-        .arg(m_sorted)
-        .arg(m_entries)
-        .arg(static_cast<cl_int>(first))
-        .arg(hits)
-        .run(count);
-    return;
-  }
   KernelLaunch resolve = m_context.launch(m_resolve);
   resolve.arg(m_camera);
   geometry.bind(resolve)
       .arg(static_cast<cl_int>(count))
+      .arg(static_cast<cl_int>(m_pixel_spp > 0))  // in pixel order, sample k of the batch is in slot k
       .arg(m_slot_of)
       .arg(m_sorted)
       .arg(m_entries)

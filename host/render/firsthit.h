@@ -68,7 +68,7 @@ class FirstHitPass {
   ZBufferAtomics m_atomics;
   DeviceScan m_scan;
   cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_dirs = nullptr, m_bound = nullptr,
-            m_emit = nullptr, m_raster = nullptr, m_resolve = nullptr, m_resolve_pixels = nullptr;
+            m_emit = nullptr, m_raster = nullptr, m_resolve = nullptr;
   bool m_wide = false;
   int m_width = 0, m_height = 0;
   std::size_t m_prims = 0, m_others = 0, m_batch = 0;

@@ -262,7 +262,7 @@ TEST_CASE("a batch in pixel order, begun and ended mid-pixel and resolved in chu
           "[firsthit][mesh]") {
   // The renders' path: a batch of the frame's samples from `first` on, in a
   // window of positions that starts before it (xy_first), kept in pixel order
-  // and resolved chunk by chunk (firsthit_resolve_pixels), against the same
+  // and resolved chunk by chunk (firsthit_resolve), against the same
   // positions sorted by the counting sort and resolved sample by sample; with
   // both kinds of atomics, on a film whose width is not a multiple of the
   // raster's 8-pixel blocks.
