@@ -21,12 +21,12 @@
  * lower primitive index, as in a brute-force loop over the scene. The minimum
  * does not depend on the order of the atomics, so neither does the result.
  *
- * Entries are 2 uints per sample, all bits set when empty (firsthit_place). With 64-bit atomics
- * (PRISM_ZBUFFER_WIDE) an entry is one ulong, t's bits above the id: positive
- * floats order as their bits, so one atom_min keeps the nearest hit, lower id
- * first. Without, two raster passes: the first keeps the nearest t's bits in
- * entry[0], the second the lowest id among the hits at exactly that t in
- * entry[1]. */
+ * Entries are 2 uints per sample, all bits set when empty (firsthit_place).
+ * With 64-bit atomics (PRISM_ZBUFFER_WIDE) an entry is one ulong, t's bits
+ * above the id: positive floats order as their bits, so one atom_min keeps the
+ * nearest hit, lower id first. Without, two raster passes: the first keeps the
+ * nearest t's bits in entry[0], the second the lowest id among the hits at
+ * exactly that t in entry[1]. */
 #ifdef PRISM_ZBUFFER_WIDE
 #pragma OPENCL EXTENSION cl_khr_int64_extended_atomics : enable
 #endif

@@ -2,12 +2,12 @@
 // depth and id of the nearest primitive, found by scan conversion on the device
 // instead of tracing through an acceleration structure (kernels/firsthit.cl).
 // Per batch of positions: the samples are sorted by film pixel (unless they
-// come in pixel order), every primitive
-// is projected to conservative film bounds, and each (primitive, 8x8-pixel
-// block) pair tests the samples of its pixels with the tracer's own ray test,
-// keeping the nearest (t, primitive) per sample by an atomic minimum; a resolve
-// then gives the hits, a chunk at a time. Cameras with depth of field or motion blur need
-// traced primary rays instead (docs/sampling.md).
+// come in pixel order), every primitive is projected to conservative film
+// bounds, and each (primitive, 8x8-pixel block) pair tests the samples of its
+// pixels with the tracer's own ray test, keeping the nearest (t, primitive) per
+// sample by an atomic minimum; a resolve then gives the hits, a chunk at a
+// time. Cameras with depth of field or motion blur need traced primary rays
+// instead (docs/sampling.md).
 #pragma once
 
 #include <cstddef>
