@@ -131,7 +131,7 @@ PRISM_HOT int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay
   *t_out = t;
   *u_out = u;
   *v_out = v;
-  return ~reject & in_range;
+  return select(in_range, (int4)(0), reject); /* not ~reject & in_range: see rays8_triangle */
 }
 
 /* The ray of a moving packet: mapped into its object's space at the ray's time
