@@ -96,8 +96,10 @@ struct Contender {
   BenchRow row;
   const DeviceAccel* accel = nullptr;  // prism's structure (null for Embree)
   std::function<double()> rebuild;  // builds the structure again, returns the build's seconds
-  std::function<std::vector<HitGpu>(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*)> intersect;
-  std::function<void(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*)> occluded;
+  // (Embree's rtcIntersect1 takes every ray alone, coherent or not.)
+  std::function<std::vector<HitGpu>(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*, RayCoherence)>
+      intersect;
+  std::function<void(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*, RayCoherence)> occluded;
 };
 
 double mrays(std::size_t rays, double seconds) { return seconds > 0 ? rays / seconds / 1e6 : kNaN; }
@@ -117,6 +119,7 @@ long structureColour(const std::string& s) {
   if (s == "none") return 0xCC79A7;
   if (s == "bvh-kdop") return 0x56B4E9;
   if (s == "bvh-kobj") return 0xE69F00;
+  if (s == "bvh-1ray") return 0x999999;
   return 0x000000;
 }
 
@@ -210,10 +213,10 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       c.row.build_seconds = ref->buildSeconds();
       c.row.bytes_per_triangle = double(ref->bytes()) / std::max<std::size_t>(1, scene.indices.size() / 3);
       c.rebuild = [&scene, threads] { return EmbreeReference(scene.positions, scene.indices, threads).buildSeconds(); };
-      c.intersect = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s) {
+      c.intersect = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s, RayCoherence) {
         return ref->intersect(q, s);
       };
-      c.occluded = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s) {
+      c.occluded = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s, RayCoherence) {
         ref->occluded(q, s);
       };
       contenders.push_back(std::move(c));
@@ -225,17 +228,21 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       AccelKind kind;
       const char* name;
       bool kdop_objects, kdop_bvh;
+      PacketUse packets;
     };
     std::vector<Variant> variants;
-    for (AccelKind kind : options.structures) variants.push_back({kind, accelName(kind), false, false});
-    if (options.bvh_kdop) variants.push_back({AccelKind::Bvh, "bvh-kdop", true, true});
-    if (options.bvh_kdop_objects) variants.push_back({AccelKind::Bvh, "bvh-kobj", true, false});
+    for (AccelKind kind : options.structures)
+      variants.push_back({kind, accelName(kind), false, false, PacketUse::WherePays});
+    if (options.bvh_one_ray) variants.push_back({AccelKind::Bvh, "bvh-1ray", false, false, PacketUse::Never});
+    if (options.bvh_kdop) variants.push_back({AccelKind::Bvh, "bvh-kdop", true, true, PacketUse::WherePays});
+    if (options.bvh_kdop_objects) variants.push_back({AccelKind::Bvh, "bvh-kobj", true, false, PacketUse::WherePays});
     for (const Variant& v : variants) {
       const AccelKind kind = v.kind;
       AccelBuildOptions build;
       build.kdop_objects = v.kdop_objects;
       build.kdop_bvh = v.kdop_bvh;
-      engines.push_back(std::make_unique<RayQueryEngine>(context, scene.geometry, kind, std::vector<MaterialGpu>{}, build));
+      engines.push_back(
+          std::make_unique<RayQueryEngine>(context, scene.geometry, kind, std::vector<MaterialGpu>{}, build, v.packets));
       RayQueryEngine* engine = engines.back().get();
       const AccelStats& st = engine->accel().stats;
       Contender c;
@@ -250,11 +257,12 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       c.row.prims_per_leaf = st.mean_prims_per_leaf;
       c.row.sah = st.sah_cost;
       c.row.duplication = st.duplication;
-      c.intersect = [engine](const std::vector<QueryRay>&, const std::vector<RayGpu>& g, double* s) {
-        return engine->intersect(g, s);
+      c.intersect = [engine](const std::vector<QueryRay>&, const std::vector<RayGpu>& g, double* s,
+                             RayCoherence coherence) { return engine->intersect(g, s, coherence);
       };
-      c.occluded = [engine](const std::vector<QueryRay>&, const std::vector<RayGpu>& g, double* s) {
-        engine->occluded(g, s);
+      c.occluded = [engine](const std::vector<QueryRay>&, const std::vector<RayGpu>& g, double* s,
+                            RayCoherence coherence) {
+        engine->occluded(g, s, coherence);
       };
       contenders.push_back(std::move(c));
     }
@@ -275,14 +283,15 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     std::vector<HitGpu> reference_hits;
     for (Contender& c : contenders) {
       double s;
-      std::vector<HitGpu> hits = c.intersect(primary, primary_gpu, &s);
+      std::vector<HitGpu> hits = c.intersect(primary, primary_gpu, &s, RayCoherence::Coherent);
       if (reference_hits.empty()) reference_hits = hits;
       if (c.row.structure != "embree") c.row.agreement = agreementPercent(reference_hits, hits);
     }
     const std::vector<QueryRay> shadows = shadowRays(primary, reference_hits, light);
     {
       double s;
-      const std::vector<HitGpu> random_hits = contenders.front().intersect(random, random_gpu, &s);
+      const std::vector<HitGpu> random_hits =
+          contenders.front().intersect(random, random_gpu, &s, RayCoherence::Scattered);
       for (Contender& c : contenders) {
         if (!c.accel) continue;
         const BvhVisits p = bvhNodeVisits(*c.accel, primary, reference_hits);
@@ -294,15 +303,16 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     }
     const std::vector<RayGpu> shadows_gpu = toRayGpu(shadows);
 
-    auto timeAll = [&](const std::vector<QueryRay>& rays, const std::vector<RayGpu>& rays_gpu, bool occlusion) {
+    auto timeAll = [&](const std::vector<QueryRay>& rays, const std::vector<RayGpu>& rays_gpu, bool occlusion,
+                       RayCoherence coherence) {
       std::vector<std::function<double()>> runs;
       for (Contender& c : contenders)
-        runs.push_back([&c, &rays, &rays_gpu, occlusion] {
+        runs.push_back([&c, &rays, &rays_gpu, occlusion, coherence] {
           double s;
           if (occlusion)
-            c.occluded(rays, rays_gpu, &s);
+            c.occluded(rays, rays_gpu, &s, coherence);
           else
-            c.intersect(rays, rays_gpu, &s);
+            c.intersect(rays, rays_gpu, &s, coherence);
           return s;
         });
       std::vector<double> seconds = interleavedMedians(options.repeats, runs);
@@ -310,9 +320,12 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       for (double t : seconds) out.push_back(mrays(rays.size(), t));
       return out;
     };
-    const std::vector<double> primary_mrays = timeAll(primary, primary_gpu, false);
-    const std::vector<double> shadow_mrays = timeAll(shadows, shadows_gpu, true);
-    const std::vector<double> random_mrays = timeAll(random, random_gpu, false);
+    // Camera rays in pixel order travel alike, as a render's do, and so do
+    // the shadow rays from their hits to one light: both go in packets where
+    // the structure and device take them (render/ray_kernel.h).
+    const std::vector<double> primary_mrays = timeAll(primary, primary_gpu, false, RayCoherence::Coherent);
+    const std::vector<double> shadow_mrays = timeAll(shadows, shadows_gpu, true, RayCoherence::Coherent);
+    const std::vector<double> random_mrays = timeAll(random, random_gpu, false, RayCoherence::Scattered);
 
     for (std::size_t i = 0; i < contenders.size(); ++i) {
       BenchRow& row = contenders[i].row;

@@ -45,9 +45,11 @@ const char* kUsage =
     "options:\n"
     "  --device D          OpenCL device: index, cpu, gpu or a name substring\n"
     "  --sizes N,...       generated tori of about N triangles each (k and M suffixes allowed)\n"
-    "  --structures LIST   comma-separated among bvh, bvh-kdop (the BVH with \"set of normals\"\n"
-    "                      bounds on its nodes and its objects), bvh-kobj (on its objects\n"
-    "                      only), octree, bsp, none (default bvh,octree,bsp)\n"
+    "  --structures LIST   comma-separated among bvh, bvh-1ray (the BVH walked one ray a\n"
+    "                      work-item on every column, as on a GPU; bvh takes the camera and\n"
+    "                      shadow rays eight at a time on a CPU), bvh-kdop (the BVH with\n"
+    "                      \"set of normals\" bounds on its nodes and its objects), bvh-kobj\n"
+    "                      (on its objects only), octree, bsp, none (default bvh,octree,bsp)\n"
     "  --out DIR           where accel.csv, accel.json and the PNG plots go (default bench-out)\n"
     "  --camera N          N x N primary rays (default 1024)\n"
     "  --random N          incoherent random rays (default 1048576)\n"
@@ -156,8 +158,11 @@ int main(int argc, char** argv) {
           options.bvh_kdop = true;
         else if (s == "bvh-kobj")
           options.bvh_kdop_objects = true;
+        else if (s == "bvh-1ray")
+          options.bvh_one_ray = true;
         else if (!prism::tryParseAccelKind(s, &kind))
-          usageError("--structures: unknown structure '" + s + "' (expected bvh, bvh-kdop, bvh-kobj, octree, bsp or none)");
+          usageError("--structures: unknown structure '" + s +
+                     "' (expected bvh, bvh-1ray, bvh-kdop, bvh-kobj, octree, bsp or none)");
         else
           options.structures.push_back(kind);
       }

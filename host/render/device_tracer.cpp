@@ -98,7 +98,11 @@ void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats, bool mark_a
   m_geometry.upload(m_context, gpu);
   m_accel.upload(m_context, accel);
   m_accel_bytes = accel.stats.bytes;
-  m_extend = m_context.kernel("extend.cl", "extend", accel.kernel_options);
+  m_extend = RayKernel(m_context, accel, "extend.cl", "extend");
+  // The frame's samples share the view: they say how dense the geometry is
+  // beside the camera rays and a point's feelers (render/ray_kernel.h).
+  const std::uint64_t view_rays = static_cast<std::uint64_t>(pixels) * std::max(1, frame.sampling.spp);
+  m_camera_packets = m_extend.packets(RayCoherence::Coherent, view_rays);
   const LightBuffer& light_buffer = *frame.light_buffer;
   // (bound, never read, without a light buffer: a buffer may not be empty)
   const std::vector<std::int32_t> cells = light_buffer.cells.empty() ? std::vector<std::int32_t>(2, 0) : light_buffer.cells;
@@ -114,9 +118,11 @@ void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats, bool mark_a
   m_shade = m_context.kernel("shade.cl", "shade",
                              accel.kernel_options + features.shading +
                                  (frame.use_light_buffer ? " -DPRISM_LIGHT_BUFFER" : ""));
+  m_feeler_packets = false;
   if (m_shadow_slots > 0) {
     m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shadows);
-    m_occlude = m_context.kernel("occlude.cl", "occlude", accel.kernel_options);
+    m_occlude = RayKernel(m_context, accel, "occlude.cl", "occlude");
+    m_feeler_packets = m_occlude.packets(RayCoherence::Coherent, view_rays);
   }
   if (m_zbuffer) {
     if (!m_firsthit) m_firsthit = std::make_unique<FirstHitPass>(m_context);
@@ -403,9 +409,11 @@ void DeviceTracer::traceSlice(int depth, size_t n, bool have_hits) {
   m_stats->rays_per_depth[depth] += n;
 
   if (!have_hits) {
-    KernelLaunch extend = m_context.launch(m_extend);
+    // Camera rays come in sample order, neighbours alike; later waves do not.
+    const bool packets = depth == 0 && m_camera_packets;
+    KernelLaunch extend = m_extend.launch(packets);
     extend.arg(m_work).arg(static_cast<int>(n));
-    m_accel.bind(extend, m_geometry).arg(m_hits).run(n);
+    m_accel.bind(extend, m_geometry).arg(m_hits).run(m_extend.workItems(n, packets));
   }
 
   cl_float4 ambient, background;
@@ -473,9 +481,13 @@ void DeviceTracer::traceShadows(size_t surfaces) {
         .run(slots);
     const size_t live = compact(m_shadows, m_shadow_tags, slots, m_shadow_queue, m_stats->rays_by_kind);
     if (live == 0) continue;
-    KernelLaunch occlude = m_context.launch(m_occlude);
+    // A shaded point's feelers are neighbours in the queue, and alike.
+    KernelLaunch occlude = m_occlude.launch(m_feeler_packets);
     occlude.arg(m_shadow_queue).arg(static_cast<int>(live));
-    m_accel.bind(occlude, m_geometry).arg(m_materials).arg(m_shadow_light).run(live);
+    m_accel.bind(occlude, m_geometry)
+        .arg(m_materials)
+        .arg(m_shadow_light)
+        .run(m_occlude.workItems(live, m_feeler_packets));
     accumulate(m_shadow_light, live, m_shadow_queue, nullptr);
   }
 }

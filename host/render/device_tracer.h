@@ -17,6 +17,7 @@
 #include "accel/accel_buffers.h"
 #include "accel/accel_structure.h"
 #include "device/context.h"
+#include "render/ray_kernel.h"
 #include "render/firsthit.h"
 #include "render/gpu_scene.h"
 #include "render/light_buffer.h"
@@ -154,8 +155,9 @@ class DeviceTracer {
   void zeroFill(Buffer& buffer, size_t bytes, size_t offset = 0);
 
   Context& m_context;
-  cl_kernel m_generate = nullptr, m_extend = nullptr, m_shade = nullptr, m_spawn_shadows = nullptr,
-            m_occlude = nullptr, m_count = nullptr, m_scan = nullptr, m_scatter = nullptr, m_accumulate = nullptr,
+  RayKernel m_extend, m_occlude;
+  bool m_camera_packets = false, m_feeler_packets = false;  // this frame's (RayKernel::packets)
+  cl_kernel m_generate = nullptr, m_shade = nullptr, m_spawn_shadows = nullptr, m_count = nullptr, m_scan = nullptr, m_scatter = nullptr, m_accumulate = nullptr,
             m_supersample = nullptr, m_resolve = nullptr;
   std::unique_ptr<FirstHitPass> m_firsthit;
 

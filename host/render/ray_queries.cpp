@@ -44,11 +44,14 @@ std::vector<RayGpu> toRayGpu(const std::vector<QueryRay>& rays) {
 }
 
 RayQueryEngine::RayQueryEngine(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
-                               std::vector<MaterialGpu> materials, const AccelBuildOptions& options)
-    : RayQueryEngine(context, geometryFromRecords(std::move(objects)), kind, std::move(materials), options) {}
+                               std::vector<MaterialGpu> materials, const AccelBuildOptions& options,
+                               PacketUse packets)
+    : RayQueryEngine(context, geometryFromRecords(std::move(objects)), kind, std::move(materials), options,
+                     packets) {}
 
 RayQueryEngine::RayQueryEngine(Context& context, SceneGeometry geometry, AccelKind kind,
-                               std::vector<MaterialGpu> materials, const AccelBuildOptions& options)
+                               std::vector<MaterialGpu> materials, const AccelBuildOptions& options,
+                               PacketUse packets)
     : m_context(context), m_geometry(std::move(geometry)) {
   m_accel = buildAccel(kind, m_geometry.objects, options);
   m_geometry_buffers.upload(context, m_geometry);
@@ -59,24 +62,31 @@ RayQueryEngine::RayQueryEngine(Context& context, SceneGeometry geometry, AccelKi
   }
   m_buffers.upload(context, *m_accel);
   auto start = Clock::now();
-  m_extend = context.kernel("extend.cl", "extend", m_accel->kernel_options);
-  m_occlude = context.kernel("occlude.cl", "occlude", m_accel->kernel_options);
+  m_extend = RayKernel(context, *m_accel, "extend.cl", "extend", packets);
+  m_occlude = RayKernel(context, *m_accel, "occlude.cl", "occlude", packets);
   // PoCL finishes compiling a kernel at its first launch with a new work-group
   // size (PERF-NOTES); one tiny launch of each keeps that out of the timings.
   RayGpu probe{};
   probe.dz = 1.0f;
   probe.tmax = 1.0f;
   intersect(std::vector<RayGpu>{probe});
-  runOcclude(std::vector<RayGpu>{probe}, m_has_materials, nullptr);
+  runOcclude(std::vector<RayGpu>{probe}, m_has_materials, nullptr, RayCoherence::Scattered);
+  if (tracesPackets()) {
+    intersect(std::vector<RayGpu>{probe}, nullptr, RayCoherence::Coherent);
+    runOcclude(std::vector<RayGpu>{probe}, m_has_materials, nullptr, RayCoherence::Coherent);
+  }
   m_compile_seconds = secondsSince(start);
 }
 
-std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<QueryRay>& rays, double* trace_seconds) {
-  return intersect(toRayGpu(rays), trace_seconds);
+std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<QueryRay>& rays, double* trace_seconds,
+                                              RayCoherence coherence) {
+  return intersect(toRayGpu(rays), trace_seconds, coherence);
 }
 
-std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, double* trace_seconds) {
+std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, double* trace_seconds,
+                                              RayCoherence coherence) {
   std::vector<HitGpu> hits(rays.size());
+  const bool packets = m_extend.packets(coherence, rays.size());
   double seconds = 0;
   const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
   Buffer ray_buffer(m_context, batch * sizeof(RayGpu));
@@ -85,9 +95,9 @@ std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, d
     const std::size_t n = std::min(batch, rays.size() - first);
     ray_buffer.write(rays.data() + first, n * sizeof(RayGpu));
     auto start = Clock::now();
-    KernelLaunch launch = m_context.launch(m_extend);
+    KernelLaunch launch = m_extend.launch(packets);
     launch.arg(ray_buffer).arg(static_cast<int>(n));
-    m_buffers.bind(launch, m_geometry_buffers).arg(hit_buffer).run(n);
+    m_buffers.bind(launch, m_geometry_buffers).arg(hit_buffer).run(m_extend.workItems(n, packets));
     m_context.finish();
     seconds += secondsSince(start);
     hit_buffer.read(hits.data() + first, n * sizeof(HitGpu));
@@ -97,8 +107,9 @@ std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, d
 }
 
 std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, bool with_materials,
-                                              double* trace_seconds) {
+                                              double* trace_seconds, RayCoherence coherence) {
   std::vector<float> carried(rays.size());
+  const bool packets = m_occlude.packets(coherence, rays.size());
   double seconds = 0;
   const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
   Buffer ray_buffer(m_context, batch * sizeof(RayGpu));
@@ -111,12 +122,12 @@ std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, b
     for (std::size_t i = 0; i < n; ++i) unit[i] = unitRay(rays[first + i]);
     ray_buffer.write(unit.data(), n * sizeof(RayGpu));
     auto start = Clock::now();
-    KernelLaunch launch = m_context.launch(m_occlude);
+    KernelLaunch launch = m_occlude.launch(packets);
     launch.arg(ray_buffer).arg(static_cast<int>(n));
     m_buffers.bind(launch, m_geometry_buffers)
         .arg(with_materials ? m_material_buffer : no_materials)
         .arg(out)
-        .run(n);
+        .run(m_occlude.workItems(n, packets));
     m_context.finish();
     seconds += secondsSince(start);
     out.read(c.data(), n * sizeof(ContributionGpu));
@@ -126,19 +137,22 @@ std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, b
   return carried;
 }
 
-std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<QueryRay>& rays, double* trace_seconds) {
-  return occluded(toRayGpu(rays), trace_seconds);
+std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<QueryRay>& rays, double* trace_seconds,
+                                                   RayCoherence coherence) {
+  return occluded(toRayGpu(rays), trace_seconds, coherence);
 }
 
-std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<RayGpu>& rays, double* trace_seconds) {
-  std::vector<float> carried = runOcclude(rays, false, trace_seconds);
+std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<RayGpu>& rays, double* trace_seconds,
+                                                   RayCoherence coherence) {
+  std::vector<float> carried = runOcclude(rays, false, trace_seconds, coherence);
   std::vector<std::uint8_t> result(carried.size());
   for (std::size_t i = 0; i < carried.size(); ++i) result[i] = carried[i] == 0.0f ? 1 : 0;
   return result;
 }
 
-std::vector<float> RayQueryEngine::transmittance(const std::vector<RayGpu>& rays, double* trace_seconds) {
-  return runOcclude(rays, m_has_materials, trace_seconds);
+std::vector<float> RayQueryEngine::transmittance(const std::vector<RayGpu>& rays, double* trace_seconds,
+                                                 RayCoherence coherence) {
+  return runOcclude(rays, m_has_materials, trace_seconds, coherence);
 }
 
 TraceResult traceRays(Context& context, SceneGeometry geometry, AccelKind kind, const std::vector<QueryRay>& rays,

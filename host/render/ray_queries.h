@@ -18,6 +18,7 @@
 #include "kernels/shared/material_gpu.h"
 #include "kernels/shared/object_gpu.h"
 #include "kernels/shared/ray_gpu.h"
+#include "render/ray_kernel.h"
 #include "scene/scene.h"
 
 namespace prism {
@@ -48,20 +49,29 @@ class RayQueryEngine {
   // `materials` may be empty: transmittance() then treats every primitive as
   // opaque (and occluded() always does).
   RayQueryEngine(Context& context, SceneGeometry geometry, AccelKind kind, std::vector<MaterialGpu> materials = {},
-                 const AccelBuildOptions& options = {});
+                 const AccelBuildOptions& options = {}, PacketUse packets = PacketUse::WherePays);
   // Over records alone (geometryFromRecords): every triangle a record.
   RayQueryEngine(Context& context, std::vector<ObjectGpu> objects, AccelKind kind,
-                 std::vector<MaterialGpu> materials = {}, const AccelBuildOptions& options = {});
+                 std::vector<MaterialGpu> materials = {}, const AccelBuildOptions& options = {},
+                 PacketUse packets = PacketUse::WherePays);
 
   // Closest hits. `trace_seconds` (optional) receives the time of the kernel
-  // runs alone: no upload, read-back, build or compilation.
-  std::vector<HitGpu> intersect(const std::vector<QueryRay>& rays, double* trace_seconds = nullptr);
-  std::vector<HitGpu> intersect(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr);
+  // runs alone: no upload, read-back, build or compilation. Coherent rays go
+  // in packets where that pays (render/ray_kernel.h); the hits are the same.
+  std::vector<HitGpu> intersect(const std::vector<QueryRay>& rays, double* trace_seconds = nullptr,
+                                RayCoherence coherence = RayCoherence::Scattered);
+  std::vector<HitGpu> intersect(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr,
+                                RayCoherence coherence = RayCoherence::Scattered);
+  // Whether coherent rays go in packets here.
+  bool tracesPackets() const { return m_extend.hasPackets() && m_occlude.hasPackets(); }
   // 1 where something lies strictly between tmin and tmax along the ray.
-  std::vector<std::uint8_t> occluded(const std::vector<QueryRay>& rays, double* trace_seconds = nullptr);
-  std::vector<std::uint8_t> occluded(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr);
+  std::vector<std::uint8_t> occluded(const std::vector<QueryRay>& rays, double* trace_seconds = nullptr,
+                                     RayCoherence coherence = RayCoherence::Scattered);
+  std::vector<std::uint8_t> occluded(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr,
+                                     RayCoherence coherence = RayCoherence::Scattered);
   // Light carried from tmin to tmax, as the renderer's shadow feelers see it.
-  std::vector<float> transmittance(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr);
+  std::vector<float> transmittance(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr,
+                                   RayCoherence coherence = RayCoherence::Scattered);
 
   const DeviceAccel& accel() const { return *m_accel; }
   const SceneGeometry& geometry() const { return m_geometry; }
@@ -74,7 +84,8 @@ class RayQueryEngine {
   static constexpr std::size_t kBatchRays = std::size_t(1) << 22;
 
  private:
-  std::vector<float> runOcclude(const std::vector<RayGpu>& rays, bool with_materials, double* trace_seconds);
+  std::vector<float> runOcclude(const std::vector<RayGpu>& rays, bool with_materials, double* trace_seconds,
+                                RayCoherence coherence);
 
   Context& m_context;
   SceneGeometry m_geometry;
@@ -83,7 +94,7 @@ class RayQueryEngine {
   Buffer m_material_buffer;
   bool m_has_materials = false;
   AccelBuffers m_buffers;
-  cl_kernel m_extend = nullptr, m_occlude = nullptr;
+  RayKernel m_extend, m_occlude;
   double m_compile_seconds = 0;
 };
 

@@ -120,6 +120,59 @@ Comparison compareHits(const std::vector<ObjectGpu>& objects, const std::vector<
   return c;
 }
 
+// Hits that must be the same to the bit, ray for ray, ties included: one
+// structure answering the same rays by two walks (render/ray_kernel.h).
+void checkIdentical(const char* what, const std::vector<HitGpu>& ref, const std::vector<HitGpu>& got) {
+  REQUIRE(got.size() == ref.size());
+  std::size_t differ = 0, first = ref.size();
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    const HitGpu& a = ref[i];
+    const HitGpu& b = got[i];
+    const bool same = a.prim == b.prim && sameBits(a.t, b.t) && sameBits(a.u, b.u) && sameBits(a.v, b.v);
+    if (!same && differ++ == 0) first = i;
+  }
+  INFO(what << ": " << differ << " of " << ref.size() << " hits differ; the first at ray " << first);
+  CHECK(differ == 0);
+}
+
+// The BVH's packet walk against its walk of one ray at a time, on all of
+// `rays` and on a stretch of them starting three rays later, whose packets
+// hold other rays together (and whose last packet is not full).
+void checkPackets(RayQueryEngine& engine, const std::vector<QueryRay>& rays, const std::vector<HitGpu>& single) {
+  INFO(describeAccel(engine.accel()));
+  REQUIRE(engine.tracesPackets());  // (PacketUse::Always)
+  checkIdentical("packets against one ray at a time", single, engine.intersect(rays, nullptr, RayCoherence::Coherent));
+  if (rays.size() < 13) return;
+  const std::vector<QueryRay> shifted(rays.begin() + 3, rays.end() - 2);
+  const std::vector<HitGpu> expected(single.begin() + 3, single.end() - 2);
+  checkIdentical("packets of other rays", expected, engine.intersect(shifted, nullptr, RayCoherence::Coherent));
+}
+
+// The same for shadow rays: occlusion, and transmittance to the bit (the
+// packet walk sends a ray that meets a semitransparent primitive on alone, so
+// its product is taken in the same order).
+void checkShadowPackets(RayQueryEngine& engine, const std::vector<RayGpu>& rays,
+                        const std::vector<std::uint8_t>& occluded, const std::vector<float>& carried) {
+  INFO(describeAccel(engine.accel()));
+  REQUIRE(engine.tracesPackets());
+  const bool shift = rays.size() >= 13;
+  const std::vector<RayGpu> shifted = shift ? std::vector<RayGpu>(rays.begin() + 3, rays.end() - 2) : rays;
+  for (int pass = 0; pass < (shift ? 2 : 1); ++pass) {
+    const std::vector<RayGpu>& in = pass ? shifted : rays;
+    const std::size_t skip = pass ? 3 : 0;
+    const std::vector<std::uint8_t> o = engine.occluded(in, nullptr, RayCoherence::Coherent);
+    const std::vector<float> c = engine.transmittance(in, nullptr, RayCoherence::Coherent);
+    std::size_t differ = 0, part = 0;
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      differ += o[i] != occluded[i + skip] || !sameBits(c[i], carried[i + skip]);
+      part += carried[i + skip] > 0.0f && carried[i + skip] < 1.0f;
+    }
+    INFO((pass ? "packets of other rays" : "packets") << ": " << differ << " of " << in.size()
+                                                      << " shadow rays differ; " << part << " carry part of the light");
+    CHECK(differ == 0);
+  }
+}
+
 template <typename T>
 std::vector<T> everyNth(const std::vector<T>& v, std::size_t n) {
   std::vector<T> out;
@@ -164,8 +217,11 @@ void checkScene(const AccelScene& scene, std::size_t random_count, int camera_si
   rays.insert(rays.end(), random.begin(), random.end());
   rays.insert(rays.end(), aimed.begin(), aimed.end());
 
-  RayQueryEngine bvh(context, scene.objects, AccelKind::Bvh, scene.materials);
+  RayQueryEngine bvh(context, scene.objects, AccelKind::Bvh, scene.materials, {}, PacketUse::Always);
   const std::vector<HitGpu> bvh_hits = bvh.intersect(rays);
+  // Camera rays, then random and aimed ones: packets alike and packets of
+  // rays in every direction.
+  checkPackets(bvh, rays, bvh_hits);
   const float light[3] = {box.hi[0] + 1, box.hi[1] + 2, box.hi[2] + 1.5f};
   std::vector<QueryRay> shadows = shadowRays(rays, bvh_hits, light);
   std::vector<QueryRay> segments = randomRays(box, random_count, 123);  // many end inside the scene
@@ -174,6 +230,7 @@ void checkScene(const AccelScene& scene, std::size_t random_count, int camera_si
   const std::vector<RayGpu> shadow_rays = toRayGpu(shadows);
   const std::vector<std::uint8_t> bvh_occluded = bvh.occluded(shadows);
   const std::vector<float> bvh_carried = bvh.transmittance(shadow_rays);
+  checkShadowPackets(bvh, shadow_rays, bvh_occluded, bvh_carried);
 
   std::size_t blocked = 0;
   for (std::uint8_t o : bvh_occluded) blocked += o;
@@ -203,10 +260,11 @@ void checkScene(const AccelScene& scene, std::size_t random_count, int camera_si
     // The same tree with "set of normals" bounds: only the node tests differ.
     AccelBuildOptions kdop;
     kdop.kdop_objects = kdop.kdop_bvh = true;
-    RayQueryEngine engine(context, scene.objects, AccelKind::Bvh, scene.materials, kdop);
+    RayQueryEngine engine(context, scene.objects, AccelKind::Bvh, scene.materials, kdop, PacketUse::Always);
     INFO("k-DOP " << describeAccel(engine.accel()));
     CHECK(engine.accel().kernel_options.find("-DPRISM_BVH_KDOP") != std::string::npos);
     checkHits(scene, "k-DOP bvh against bvh", rays, bvh_hits, engine.intersect(rays));
+    CHECK_FALSE(engine.tracesPackets());  // the packet walk does not test the diagonal slabs
     checkOcclusion("k-DOP bvh against bvh", bvh_occluded, engine.occluded(shadows));
     checkCarried("k-DOP bvh against bvh", bvh_carried, engine.transmittance(shadow_rays));
   }
@@ -390,7 +448,7 @@ TEST_CASE("closest hits at exact ties and a few ulps apart: every structure answ
   std::size_t on_plane = 0;
   for (const HitGpu& h : ref) on_plane += h.prim == 2000;
   for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
-    RayQueryEngine engine(sharedContext(), tiny.scene.objects, kind);
+    RayQueryEngine engine(sharedContext(), tiny.scene.objects, kind, {}, {}, PacketUse::Always);
     const std::vector<HitGpu> got = engine.intersect(tiny.rays);
     std::size_t differ = 0;
     for (std::size_t i = 0; i < ref.size(); ++i)
@@ -399,6 +457,8 @@ TEST_CASE("closest hits at exact ties and a few ulps apart: every structure answ
     INFO(accelName(kind) << ": " << differ << " of " << ref.size() << " rays differ; " << on_plane
                          << " reference hits on the plane");
     CHECK(differ == 0);
+    if (kind == AccelKind::Bvh)  // its packet walk, where ties between packet mates' triangles abound
+      checkIdentical("bvh packets against none", ref, engine.intersect(tiny.rays, nullptr, RayCoherence::Coherent));
   }
 }
 
@@ -568,11 +628,15 @@ TEST_CASE("rays with NaN or infinite parts, or no direction, are misses in every
   }
   std::size_t hits_before = 0;
   for (AccelKind kind : allAccelKinds()) {
-    RayQueryEngine engine(sharedContext(), scene.objects, kind, scene.materials);
+    RayQueryEngine engine(sharedContext(), scene.objects, kind, scene.materials, {}, PacketUse::Always);
     INFO(accelName(kind));
     const std::vector<HitGpu> hits = engine.intersect(rays);
     const std::vector<std::uint8_t> occluded = engine.occluded(rays);
     const std::vector<float> carried = engine.transmittance(toRayGpu(rays));
+    if (engine.tracesPackets()) {
+      checkIdentical("packets", hits, engine.intersect(rays, nullptr, RayCoherence::Coherent));
+      checkShadowPackets(engine, toRayGpu(rays), occluded, carried);
+    }
     std::size_t good_hits = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
       if (walkable[i]) {
@@ -588,5 +652,95 @@ TEST_CASE("rays with NaN or infinite parts, or no direction, are misses in every
     CHECK(good_hits > 0);  // the well-formed rays beside them still hit
     if (hits_before) CHECK(good_hits == hits_before);
     hits_before = good_hits;
+  }
+}
+
+TEST_CASE("coherent rays go in packets through the BVH on a CPU only, never with linear motion or k-DOP bounds",
+          "[accel]") {
+  // The packet walk reads a node's boxes at shutter open (accel/bvh_packets.h)
+  // and runs its eight lanes one after another on a GPU.
+  DeviceDescription cpu, gpu;
+  cpu.type = CL_DEVICE_TYPE_CPU;
+  gpu.type = CL_DEVICE_TYPE_GPU;
+  AccelScene scene = mixedScene();
+  for (AccelKind kind : allAccelKinds()) {
+    const std::unique_ptr<DeviceAccel> accel = buildAccel(kind, scene.objects);
+    INFO(accelName(kind));
+    CHECK(packetsPay(*accel, cpu) == (kind == AccelKind::Bvh));
+    CHECK_FALSE(packetsPay(*accel, gpu));
+  }
+  DeviceAccel moving = *buildAccel(AccelKind::Bvh, scene.objects);
+  moving.kernel_options += " -DPRISM_BVH_MOTION";
+  CHECK_FALSE(packetsPay(moving, cpu));
+  AccelBuildOptions kdop;
+  kdop.kdop_bvh = true;
+  CHECK_FALSE(packetsPay(*buildAccel(AccelKind::Bvh, scene.objects, kdop), cpu));
+}
+
+TEST_CASE("shadow rays in packets through a semitransparent plane and triangles carry what one ray alone does",
+          "[accel]") {
+  // The plane x = 0.25 (k_trans 0.5) is tested before the tree: the rays that
+  // cross it are walked alone from the start, the others in packets.
+  AccelScene scene;
+  scene.materials = {materialWithTransmit(0), materialWithTransmit(0.5f), materialWithTransmit(0.25f)};
+  int m = 0;
+  for (ObjectGpu& g : trianglesFromMesh(triangleSoup(600, 3, 0.1f))) {
+    g.material = m++ % 3;
+    scene.objects.push_back(g);
+  }
+  ObjectGpu plane = identityObject(OBJECT_PLANE, 1);
+  plane.p[0] = 0.25f;
+  plane.p[3] = 1;
+  scene.objects.push_back(plane);
+  std::vector<RayGpu> rays;
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 64; ++i) {
+      QueryRay q{(i + 0.5f) / 64, (j + 0.5f) / 64, -1, 1e-4f, 0, 0, 0, 1};
+      q.dx = 0.5f - q.ox;
+      q.dy = 0.5f - q.oy;
+      q.dz = 3 - q.oz;
+      rays.push_back(toRayGpu({q})[0]);
+    }
+  RayQueryEngine engine(sharedContext(), scene.objects, AccelKind::Bvh, scene.materials, {}, PacketUse::Always);
+  const std::vector<float> carried = engine.transmittance(rays);
+  std::size_t dark = 0, clear = 0, plane_only = 0, more = 0, part = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const float c = carried[i];
+    dark += c == 0.0f;
+    clear += c == 1.0f;
+    plane_only += c == 0.5f;
+    more += c > 0.0f && c < 0.5f;
+    // Beside the plane, through semitransparent triangles: met inside the walk.
+    part += rays[i].ox > 0.25f && c > 0.0f && c < 1.0f;
+  }
+  INFO(dark << " rays blocked, " << clear << " clear, " << plane_only << " through the plane alone, " << more
+            << " through it and more, " << part << " through triangles only");
+  CHECK(dark > 0);
+  CHECK(clear > 0);
+  CHECK(plane_only > 0);
+  CHECK(more > 0);
+  CHECK(part > 0);
+  checkShadowPackets(engine, rays, engine.occluded(rays), carried);
+}
+
+TEST_CASE("the packet walks answer as one ray at a time on any device the BVH allows", "[accel][packets]") {
+  // Few rays: ctest also runs this case under Oclgrind, which checks every
+  // access; renders there take the camera rays' packets too (Oclgrind reports
+  // itself as every type of device, a CPU among them).
+  AccelScene scene = mixedScene(200);
+  const Aabb box = boundsOf(scene.objects);
+  std::vector<QueryRay> rays = cameraRays(box, 8, 8);
+  const std::vector<QueryRay> random = randomRays(box, 60, 3), aimed = vertexRays(scene.objects, 13, 4);
+  rays.insert(rays.end(), random.begin(), random.end());
+  rays.insert(rays.end(), aimed.begin(), aimed.end());
+  RayQueryEngine engine(sharedContext(), scene.objects, AccelKind::Bvh, scene.materials, {}, PacketUse::Always);
+  const std::vector<HitGpu> hits = engine.intersect(rays);
+  checkPackets(engine, rays, hits);
+  // To a light above, and to one behind the semitransparent wall plane (z
+  // about -1.5), which sends every feeler on alone.
+  const float above[3] = {box.hi[0] + 1, box.hi[1] + 2, box.hi[2] + 1.5f}, behind[3] = {0.5f, 0.5f, -3};
+  for (const float* light : {above, behind}) {
+    const std::vector<RayGpu> shadows = toRayGpu(shadowRays(rays, hits, light));
+    checkShadowPackets(engine, shadows, engine.occluded(shadows), engine.transmittance(shadows));
   }
 }

@@ -1,0 +1,43 @@
+#include "render/ray_kernel.h"
+
+#include <string>
+
+namespace prism {
+
+namespace {
+
+// The BVH, without linear motion bounds (the packet walk reads a node's boxes
+// at one instant) or k-DOP node bounds (whose slabs it does not test).
+bool packetsWalk(const DeviceAccel& accel) {
+  const std::string& o = accel.kernel_options;
+  return accel.kind == AccelKind::Bvh && o.find("-DPRISM_BVH_MOTION") == std::string::npos &&
+         o.find("-DPRISM_BVH_KDOP") == std::string::npos;
+}
+
+}  // namespace
+
+bool packetsPay(const DeviceAccel& accel, const DeviceDescription& device) {
+  return packetsWalk(accel) && (device.type & CL_DEVICE_TYPE_CPU) != 0;
+}
+
+RayKernel::RayKernel(Context& context, const DeviceAccel& accel, const char* entry_file, const char* name,
+                     PacketUse use)
+    : m_context(&context), m_primitives(accel.stats.primitives), m_use(use) {
+  m_single = context.kernel(entry_file, name, accel.kernel_options);
+  if (use == PacketUse::Always ? packetsWalk(accel) : use == PacketUse::WherePays && packetsPay(accel, context.device()))
+    m_packets = context.kernel(entry_file, std::string(name) + "_packets", accel.kernel_options);
+}
+
+bool RayKernel::packets(RayCoherence coherence, std::uint64_t view_rays) const {
+  return m_packets && coherence == RayCoherence::Coherent &&
+         (m_use == PacketUse::Always ||
+          static_cast<double>(m_primitives) <= kPacketPrimsPerRay * static_cast<double>(view_rays));
+}
+
+KernelLaunch RayKernel::launch(bool packets) const { return m_context->launch(packets ? m_packets : m_single); }
+
+std::size_t RayKernel::workItems(std::size_t rays, bool packets) const {
+  return packets ? (rays + kPacketRays - 1) / kPacketRays : rays;
+}
+
+}  // namespace prism

@@ -1,0 +1,68 @@
+// A ray query's kernels for one acceleration structure, and which of them a
+// queue of rays goes to. `extend` and `occlude` give each ray a work-item of
+// its own; their `_packets` twins (kernels/accel/bvh_packets.h) walk the BVH
+// with eight neighbouring rays at once. That pays for rays that travel alike,
+// such as camera rays in sample order or the shadow rays of one shaded point,
+// and costs for rays that do not (random rays run at about half the speed).
+// On a GPU each work-item's eight lanes run one after another, so there the
+// packets are never used. Both give the same answers to the bit
+// (tests/accel/accel_agreement_test.cpp).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "accel/accel_structure.h"
+#include "device/context.h"
+
+namespace prism {
+
+// Whether the rays of a queue travel alike: neighbours in it start near each
+// other in nearly the same direction.
+enum class RayCoherence { Scattered, Coherent };
+
+// Rays a work-item of a `_packets` kernel walks with (PACKET_RAYS there).
+constexpr std::size_t kPacketRays = 8;
+
+// Packets pay while the scene's bounded primitives are at most this many per
+// ray of the view (a frame's samples, a query's rays): with denser geometry,
+// neighbouring rays part in different leaves. Measured with `prism-bench
+// accel --structures bvh,bvh-1ray` (docs/accel.md, "Coherent rays in
+// packets"): camera rays 1.4x faster at 0.066 and 0.265 primitives a ray,
+// 1.14x at 1.06 and 0.8x at 4.2; shadow rays 1.28x at 0.066, level at 0.265,
+// 0.64x at 1.06.
+constexpr double kPacketPrimsPerRay = 0.25;
+
+// Whether coherent rays through `accel` on `device` go in packets: the BVH
+// (without linear motion bounds, whose boxes the packet walk reads at one
+// instant, or k-DOP node bounds, whose slabs it does not test), on a CPU device.
+bool packetsPay(const DeviceAccel& accel, const DeviceDescription& device);
+
+// Where coherent rays go in packets: where they pay, on any device the
+// structure allows (the tests check the packet walks on whatever device they
+// run on), or nowhere (prism-bench's bvh-1ray, the walk a GPU takes).
+enum class PacketUse { WherePays, Always, Never };
+
+class RayKernel {
+ public:
+  RayKernel() = default;
+  // Kernel `name` of program `entry_file`, and `name`_packets where `use` allows.
+  RayKernel(Context& context, const DeviceAccel& accel, const char* entry_file, const char* name,
+            PacketUse use = PacketUse::WherePays);
+
+  // Whether rays of this coherence go in packets, `view_rays` rays sharing the
+  // view (kPacketPrimsPerRay; PacketUse::Always: whatever their number).
+  bool packets(RayCoherence coherence, std::uint64_t view_rays) const;
+  // A launch: add the kernel's arguments, then run(workItems(rays, packets)).
+  KernelLaunch launch(bool packets) const;
+  std::size_t workItems(std::size_t rays, bool packets) const;
+  bool hasPackets() const { return m_packets != nullptr; }
+
+ private:
+  Context* m_context = nullptr;
+  cl_kernel m_single = nullptr, m_packets = nullptr;
+  std::size_t m_primitives = 0;  // bounded ones, in the structure
+  PacketUse m_use = PacketUse::WherePays;
+};
+
+}  // namespace prism
