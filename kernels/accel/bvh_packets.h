@@ -180,36 +180,23 @@ PRISM_HOT int8 rays8_child(__global const float* nf, int i, int8 reach, const Ra
 }
 
 /* Triangle k of a leaf packet against the eight rays, with packet_intersect's
- * operations on its lane k: the lanes it meets within (tmin, best] (closed)
- * or (tmin, best) (not), and there t, u and v. The packet is read as float4
- * words, as packet_intersect reads it (a float pointer into the record reads
- * to a bounds checker as an index past its first member array). */
+ * operations (MOLLER_TRUMBORE_LANES) on its lane k: the lanes it meets within
+ * (tmin, best] (closed) or (tmin, best) (not), and there t, u and v. The
+ * packet is read as float4 words, as packet_intersect reads it (a float
+ * pointer into the record reads to a bounds checker as an index past its
+ * first member array). */
 PRISM_HOT int8 rays8_triangle(__global const TriPacketGpu* pk, int k, const RayPacket* p, int closed,
                               float8* t_out, float8* u_out, float8* v_out) {
   __global const float4* q = (__global const float4*)pk;
+  float8 v0x = (float8)(accel_lane(q[0], k)), v0y = (float8)(accel_lane(q[1], k)), v0z = (float8)(accel_lane(q[2], k));
   float8 e1x = (float8)(accel_lane(q[3], k)), e1y = (float8)(accel_lane(q[4], k)), e1z = (float8)(accel_lane(q[5], k));
   float8 e2x = (float8)(accel_lane(q[6], k)), e2y = (float8)(accel_lane(q[7], k)), e2z = (float8)(accel_lane(q[8], k));
-  float8 pvx = p->dy * e2z - p->dz * e2y;
-  float8 pvy = p->dz * e2x - p->dx * e2z;
-  float8 pvz = p->dx * e2y - p->dy * e2x;
-  float8 det = e1x * pvx + e1y * pvy + e1z * pvz;
-  float8 inv_det = 1.0f / det;
-  float8 tvx = p->ox - (float8)(accel_lane(q[0], k)), tvy = p->oy - (float8)(accel_lane(q[1], k)),
-         tvz = p->oz - (float8)(accel_lane(q[2], k));
-  float8 u = (tvx * pvx + tvy * pvy + tvz * pvz) * inv_det;
-  float8 qvx = tvy * e1z - tvz * e1y;
-  float8 qvy = tvz * e1x - tvx * e1z;
-  float8 qvz = tvx * e1y - tvy * e1x;
-  float8 v = (p->dx * qvx + p->dy * qvy + p->dz * qvz) * inv_det;
-  float8 t = (e2x * qvx + e2y * qvy + e2z * qvz) * inv_det;
-  int8 reject = (det == 0.0f) | (u < 0.0f) | (u > 1.0f) | (v < 0.0f) | (u + v > 1.0f);
-  int8 in_range = (t > p->tmin) & (closed ? (t <= p->best) : (t < p->best));
+  float8 ox = p->ox, oy = p->oy, oz = p->oz, dx = p->dx, dy = p->dy, dz = p->dz;
+  MOLLER_TRUMBORE_LANES(float8, int8, p->tmin, p->best, closed);
   *t_out = t;
   *u_out = u;
   *v_out = v;
-  /* Oclgrind 21.10 computes ~reject & in_range wrongly here (lanes of -2,
-   * hits with v = 8 accepted); a select is the same mask on every device. */
-  return select(in_range, (int8)(0), reject);
+  return hit;
 }
 
 /* Whether leaf packet pk is tested ray by ray: it holds other kinds of

@@ -107,31 +107,45 @@ PRISM_HOT void accel_accept(float t, float u, float v, int prim, float* best, Hi
   }
 }
 
+/* Moller-Trumbore in lanes of vector type V (mask type M): four triangles
+ * against one ray (packet_intersect) or one triangle against eight rays
+ * (accel/bvh_packets.h), the same operations in the same order, so both give
+ * the same t, u, v bits. Reads V v0x..v0z, e1x..e2z, ox..oz and dx..dz;
+ * declares V t, u, v and M hit, the lanes met within (tmin, tlimit] (or
+ * (tmin, tlimit) when `closed` is 0). The mask is a select, not ~reject &
+ * in_range, which Oclgrind 21.10 computed wrongly (lanes of -2, hits with
+ * v = 8 accepted). */
+#define MOLLER_TRUMBORE_LANES(V, M, tmin, tlimit, closed)                              \
+  V pvx = dy * e2z - dz * e2y;                                                       \
+  V pvy = dz * e2x - dx * e2z;                                                       \
+  V pvz = dx * e2y - dy * e2x;                                                       \
+  V det = e1x * pvx + e1y * pvy + e1z * pvz;                                         \
+  V inv_det = 1.0f / det;                                                            \
+  V tvx = ox - v0x, tvy = oy - v0y, tvz = oz - v0z;                                  \
+  V u = (tvx * pvx + tvy * pvy + tvz * pvz) * inv_det;                               \
+  V qvx = tvy * e1z - tvz * e1y;                                                     \
+  V qvy = tvz * e1x - tvx * e1z;                                                     \
+  V qvz = tvx * e1y - tvy * e1x;                                                     \
+  V v = (dx * qvx + dy * qvy + dz * qvz) * inv_det;                                  \
+  V t = (e2x * qvx + e2y * qvy + e2z * qvz) * inv_det;                               \
+  M reject = (det == 0.0f) | (u < 0.0f) | (u > 1.0f) | (v < 0.0f) | (u + v > 1.0f); \
+  M in_range = (t > (tmin)) & ((closed) ? (t <= (tlimit)) : (t < (tlimit)));         \
+  M hit = select(in_range, (M)(0), reject)
+
 /* Moller-Trumbore on four triangles: t, u, v and a lane mask of hits in
  * (tmin, tlimit] (or (tmin, tlimit) when `closed` is 0). */
 PRISM_HOT int4 packet_intersect(__global const TriPacketGpu* pk, const PacketRay* r, float tmin, float tlimit,
                                 int closed, float4* t_out, float4* u_out, float4* v_out) {
   __global const float4* q = (__global const float4*)pk;
+  float4 v0x = q[0], v0y = q[1], v0z = q[2];
   float4 e1x = q[3], e1y = q[4], e1z = q[5];
   float4 e2x = q[6], e2y = q[7], e2z = q[8];
-  float4 pvx = r->dy * e2z - r->dz * e2y;
-  float4 pvy = r->dz * e2x - r->dx * e2z;
-  float4 pvz = r->dx * e2y - r->dy * e2x;
-  float4 det = e1x * pvx + e1y * pvy + e1z * pvz;
-  float4 inv_det = 1.0f / det;
-  float4 tvx = r->ox - q[0], tvy = r->oy - q[1], tvz = r->oz - q[2];
-  float4 u = (tvx * pvx + tvy * pvy + tvz * pvz) * inv_det;
-  float4 qvx = tvy * e1z - tvz * e1y;
-  float4 qvy = tvz * e1x - tvx * e1z;
-  float4 qvz = tvx * e1y - tvy * e1x;
-  float4 v = (r->dx * qvx + r->dy * qvy + r->dz * qvz) * inv_det;
-  float4 t = (e2x * qvx + e2y * qvy + e2z * qvz) * inv_det;
-  int4 reject = (det == 0.0f) | (u < 0.0f) | (u > 1.0f) | (v < 0.0f) | (u + v > 1.0f);
-  int4 in_range = (t > tmin) & (closed ? (t <= tlimit) : (t < tlimit));
+  float4 ox = r->ox, oy = r->oy, oz = r->oz, dx = r->dx, dy = r->dy, dz = r->dz;
+  MOLLER_TRUMBORE_LANES(float4, int4, tmin, tlimit, closed);
   *t_out = t;
   *u_out = u;
   *v_out = v;
-  return select(in_range, (int4)(0), reject); /* not ~reject & in_range: see rays8_triangle */
+  return hit;
 }
 
 /* The ray of a moving packet: mapped into its object's space at the ray's time
