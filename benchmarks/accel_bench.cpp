@@ -241,8 +241,8 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       AccelBuildOptions build;
       build.kdop_objects = v.kdop_objects;
       build.kdop_bvh = v.kdop_bvh;
-      engines.push_back(
-          std::make_unique<RayQueryEngine>(context, scene.geometry, kind, std::vector<MaterialGpu>{}, build, v.packets));
+      engines.push_back(std::make_unique<RayQueryEngine>(context, scene.geometry, kind, std::vector<MaterialGpu>{},
+                                                         build, v.packets));
       RayQueryEngine* engine = engines.back().get();
       const AccelStats& st = engine->accel().stats;
       Contender c;

@@ -157,8 +157,8 @@ class DeviceTracer {
   Context& m_context;
   RayKernel m_extend, m_occlude;
   bool m_camera_packets = false, m_feeler_packets = false;  // this frame's (RayKernel::packets)
-  cl_kernel m_generate = nullptr, m_shade = nullptr, m_spawn_shadows = nullptr, m_count = nullptr, m_scan = nullptr, m_scatter = nullptr, m_accumulate = nullptr,
-            m_supersample = nullptr, m_resolve = nullptr;
+  cl_kernel m_generate = nullptr, m_shade = nullptr, m_spawn_shadows = nullptr, m_count = nullptr, m_scan = nullptr,
+            m_scatter = nullptr, m_accumulate = nullptr, m_supersample = nullptr, m_resolve = nullptr;
   std::unique_ptr<FirstHitPass> m_firsthit;
 
   // Per-frame state.

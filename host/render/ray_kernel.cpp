@@ -24,7 +24,10 @@ RayKernel::RayKernel(Context& context, const DeviceAccel& accel, const char* ent
                      PacketUse use)
     : m_context(&context), m_primitives(accel.stats.primitives), m_use(use) {
   m_single = context.kernel(entry_file, name, accel.kernel_options);
-  if (use == PacketUse::Always ? packetsWalk(accel) : use == PacketUse::WherePays && packetsPay(accel, context.device()))
+  const bool compile = use == PacketUse::Always      ? packetsWalk(accel)
+                       : use == PacketUse::WherePays ? packetsPay(accel, context.device())
+                                                     : false;
+  if (compile)
     m_packets = context.kernel(entry_file, std::string(name) + "_packets", accel.kernel_options);
 }
 

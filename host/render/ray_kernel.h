@@ -5,8 +5,10 @@
 // such as camera rays in sample order or the shadow rays of one shaded point,
 // and costs for rays that do not (random rays run at about half the speed).
 // On a GPU each work-item's eight lanes run one after another, so there the
-// packets are never used. Both give the same answers to the bit
-// (tests/accel/accel_agreement_test.cpp).
+// packets are never used. Both give the same answers to the bit on every ray
+// the tests trace (tests/accel/accel_agreement_test.cpp; docs/accel.md,
+// "Coherent rays in packets", names the grazing hit where the order of visits
+// could still tell).
 #pragma once
 
 #include <cstddef>
