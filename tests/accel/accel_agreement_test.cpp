@@ -724,9 +724,7 @@ TEST_CASE("shadow rays in packets through a semitransparent plane and triangles 
 }
 
 TEST_CASE("the packet walks answer as one ray at a time on any device the BVH allows", "[accel][packets]") {
-  // Few rays: ctest also runs this case under Oclgrind, which checks every
-  // access; renders there take the camera rays' packets too (Oclgrind reports
-  // itself as every type of device, a CPU among them).
+  // PacketUse::Always: on whatever device the tests run (PRISM_TEST_DEVICE).
   AccelScene scene = mixedScene(200);
   const Aabb box = boundsOf(scene.objects);
   std::vector<QueryRay> rays = cameraRays(box, 8, 8);
