@@ -1,6 +1,6 @@
 /* extend: the closest hit of each ray in a queue. */
 #include "accel/accel.h"
-#include "accel/bvh_packets.h"
+#include "accel/packet_queries.h"
 #include "shading/ray_io.h"
 
 __kernel void extend(__global const RayGpu* rays, int count, ACCEL_KERNEL_PARAMS, __global HitGpu* hits) {
@@ -20,6 +20,6 @@ __kernel void extend_packets(__global const RayGpu* rays, int count, ACCEL_KERNE
   ACCEL_GEOMETRY;
   int first = get_global_id(0) * PACKET_RAYS;
   if (first >= count) return;
-  bvh_packet_closest(ACCEL_ARGS, rays + first, min(PACKET_RAYS, count - first), hits + first);
+  rays8_closest(ACCEL_ARGS, rays + first, min(PACKET_RAYS, count - first), hits + first);
 }
 #endif

@@ -1,7 +1,7 @@
 /* occlude: trace each shadow feeler and turn it into the light it brings to its
  * pixel: none through an opaque object, k_trans of each semitransparent one. */
 #include "accel/accel.h"
-#include "accel/bvh_packets.h"
+#include "accel/packet_queries.h"
 #include "shading/ray_io.h"
 #include "shared/contribution_gpu.h"
 
@@ -37,7 +37,7 @@ __kernel void occlude_packets(__global const RayGpu* rays, int count, ACCEL_KERN
   if (first >= count) return;
   int lanes = min(PACKET_RAYS, count - first);
   float carried[PACKET_RAYS];
-  bvh_packet_transmittance(ACCEL_ARGS, materials, rays + first, lanes, carried);
+  rays8_transmittance(ACCEL_ARGS, materials, rays + first, lanes, carried);
   for (int l = 0; l < lanes; ++l) out[first + l] = occlude_contribution(rays[first + l], carried[l]);
 }
 #endif

@@ -1,6 +1,6 @@
 // A ray query's kernels for one acceleration structure, and which of them a
 // queue of rays goes to. `extend` and `occlude` give each ray a work-item of
-// its own; their `_packets` twins (kernels/accel/bvh_packets.h) walk the BVH
+// its own; their `_packets` twins (kernels/accel/packet_queries.h) walk the BVH
 // with eight neighbouring rays at once. That pays for rays that travel alike,
 // such as camera rays in sample order or the shadow rays of one shaded point,
 // and costs for rays that do not (random rays run at about half the speed).

@@ -1,160 +1,30 @@
-/* Closest hits and transmittance of eight rays walking the BVH together (ray
- * packets, Wald et al. 2001), for rays that travel alike: the camera rays of
- * neighbouring samples, the shadow rays of one shaded point. Lane l of every
- * float8 is ray l. A node's children are tested one by one against all eight
- * rays (where one ray tests all eight children at once, accel/bvh.h), so the
+/* The BVH's walk of eight rays together (accel/rays8.h has the lanes and the
+ * leaf tests). A node's children are tested one by one against all eight rays
+ * (where one ray tests all eight children at once, accel/bvh.h), so the
  * node's loads, the stack and the branches are paid once for eight rays. A
  * child goes on the stack when any ray meets it, with each ray's entry
  * distance, and is skipped when popped if no ray still needs it.
  *
  * Each lane tests only the leaves its own box tests admit, with the same
  * operations as structure_closest (a box's near and far planes taken by min
- * and max where the lanes' directions differ in sign: the same values), the
- * triangle test is packet_intersect's, operation for operation, and the hit
- * rule (nearest t, then the lower id) does not depend on the order in which
- * primitives come. So the hits are structure_closest's to the bit, on every ray
- * the tests trace. What the order can change, as between the structures, is a
- * hit at a grazing angle whose computed t lies before its own leaf's box
- * (Moller-Trumbore's t was measured 3e-5 early there, leaf_packets.h): a walk
- * that has found a nearer hit first culls that leaf. Which rays share a packet
- * is fixed by their place in the sample sequence (slices and units are
- * multiples of eight), so an image does not depend on how a frame is split.
- *
- * Transmittance is a product whose bits depend on the order of its factors,
- * and a packet meets primitives in another order than one ray does. So the
- * packet settles only what no order changes: a ray that meets nothing (or
- * only primitives with k_trans 1) carries 1, and one that meets an opaque
- * primitive carries 0. A ray that meets a semitransparent one leaves the
- * packet and is walked alone at the end (accel_transmittance).
+ * and max where the lanes' directions differ in sign: the same values), so the
+ * hits are structure_closest's to the bit, on every ray the tests trace. What
+ * the order can change, as between the structures, is a hit at a grazing
+ * angle whose computed t lies before its own leaf's box (Moller-Trumbore's t
+ * was measured 3e-5 early there, leaf_packets.h): a walk that has found a
+ * nearer hit first culls that leaf.
  *
  * Not with a BVH over moving primitives' linear bounds (a node's boxes are
  * read at shutter open only) nor with k-DOP node bounds (whose slabs the walk
- * does not test): host/render/ray_kernel.cpp never asks for packets there.
- * Moving triangles in a BVH of swept boxes are tested ray by ray.
- * The triangle test divides a float8 where packet_intersect divides a float4:
- * the same bits where division rounds correctly, which prism asks of every
- * device that offers it (and PoCL does). */
+ * does not test): accel/packet_queries.h leaves the walk out there, and
+ * host/render/ray_kernel.cpp never asks for packets. Moving triangles in a BVH
+ * of swept boxes are tested ray by ray. */
 #ifndef PRISM_ACCEL_BVH_PACKETS_H
 #define PRISM_ACCEL_BVH_PACKETS_H
 
-#include "accel/accel.h"
-#include "shared/ray_gpu.h"
+#include "accel/rays8.h"
 
-#if defined(PRISM_ACCEL_BVH) && !defined(PRISM_BVH_MOTION) && !defined(PRISM_BVH_KDOP)
-
-#define PACKET_RAYS 8
-
-/* min and max without OpenCL's NaN rule: no NaN reaches them (rays are
- * walkable and reciprocals finite). */
-PRISM_HOT float8 rays8_min(float8 a, float8 b) { return select(b, a, a < b); }
-PRISM_HOT float8 rays8_max(float8 a, float8 b) { return select(b, a, a > b); }
-PRISM_HOT float rays8_least(float8 a) {
-  float4 m4 = select(a.hi, a.lo, a.lo < a.hi);
-  float2 m2 = select(m4.hi, m4.lo, m4.lo < m4.hi);
-  return m2.x < m2.y ? m2.x : m2.y;
-}
-
-/* The far end of a closed lane's search: no box's far distance or triangle's
- * t is below it (tmin is finite in every walkable ray). */
-#define RAYS8_CLOSED (-PRISM_INF)
-
-/* The packet's rays one by one. A lane without a walkable ray holds one that
- * searches nothing (tmax RAYS8_CLOSED). */
-typedef struct RayLanes {
-  float ox[8], oy[8], oz[8], dx[8], dy[8], dz[8], tmin[8], tmax[8], time[8];
-  int live; /* bit l: lane l holds a walkable ray */
-} RayLanes;
-
-PRISM_HOT void rays8_lanes(__global const RayGpu* rays, int lanes, RayLanes* r) {
-  r->live = 0;
-  for (int l = 0; l < PACKET_RAYS; ++l) {
-    float3 o = (float3)(0.0f), d = (float3)(1.0f);
-    float lo = 0.0f, hi = RAYS8_CLOSED, time = 0.0f;
-    if (l < lanes) {
-      RayGpu q = rays[l];
-      float3 qo = (float3)(q.ox, q.oy, q.oz), qd = (float3)(q.dx, q.dy, q.dz);
-      if (accel_ray_walkable(qo, qd, q.tmin, q.tmax)) {
-        r->live |= 1 << l;
-        o = qo;
-        d = qd;
-        lo = q.tmin;
-        hi = q.tmax;
-        time = q.time;
-      }
-    }
-    r->ox[l] = o.x;
-    r->oy[l] = o.y;
-    r->oz[l] = o.z;
-    r->dx[l] = d.x;
-    r->dy[l] = d.y;
-    r->dz[l] = d.z;
-    r->tmin[l] = lo;
-    r->tmax[l] = hi;
-    r->time[l] = time;
-  }
-  /* Lanes without a ray point the way the first ray does, so that they do not
-   * keep the packet from choosing its planes once (RayPacket). */
-  if (r->live) {
-    int first = 31 - clz(r->live & -r->live);
-    for (int l = 0; l < PACKET_RAYS; ++l) {
-      if (r->live & (1 << l)) continue;
-      r->dx[l] = r->dx[first];
-      r->dy[l] = r->dy[first];
-      r->dz[l] = r->dz[first];
-    }
-  }
-}
-
-typedef struct RayPacket {
-  float8 ox, oy, oz, dx, dy, dz, ix, iy, iz, tmin;
-  /* Per lane, the far end of the search: the best t so far (closest hits) or
-   * tmax (transmittance); RAYS8_CLOSED in a lane with nothing left to find. */
-  float8 best;
-  /* Closest hits: per lane, what accel_accept keeps besides best. */
-  float8 u, v;
-  int8 prim;
-  /* Transmittance: per lane, the light settled (1 until a ray meets an opaque
-   * primitive), and whether the ray is to be walked alone at the end. */
-  float8 light;
-  int8 alone;
-  /* Lanes whose directions share each axis's sign meet each box's near planes
-   * first, as one ray does; then the near and far plane of each axis are
-   * chosen once for the packet (nx, ny, nz: offsets of the near planes' floats
-   * in a node; the far ones are offset ^ 8). */
-  bool same_signs;
-  int nx, ny, nz;
-} RayPacket;
-
-/* The packet of lanes r, its search reaching to best[l] in lane l; no hit yet. */
-PRISM_HOT void rays8_packet(const RayLanes* r, const float* best, RayPacket* p) {
-  float ix[8], iy[8], iz[8];
-  for (int l = 0; l < PACKET_RAYS; ++l) {
-    float3 inv = accel_safe_rcp((float3)(r->dx[l], r->dy[l], r->dz[l]));
-    ix[l] = inv.x;
-    iy[l] = inv.y;
-    iz[l] = inv.z;
-  }
-  p->ox = vload8(0, r->ox);
-  p->oy = vload8(0, r->oy);
-  p->oz = vload8(0, r->oz);
-  p->dx = vload8(0, r->dx);
-  p->dy = vload8(0, r->dy);
-  p->dz = vload8(0, r->dz);
-  p->ix = vload8(0, ix);
-  p->iy = vload8(0, iy);
-  p->iz = vload8(0, iz);
-  p->tmin = vload8(0, r->tmin);
-  p->best = vload8(0, best);
-  p->u = p->v = (float8)(0.0f);
-  p->prim = (int8)(-1);
-  p->light = (float8)(1.0f);
-  p->alone = (int8)(0);
-  p->same_signs = (all(p->ix >= 0.0f) || all(p->ix < 0.0f)) && (all(p->iy >= 0.0f) || all(p->iy < 0.0f)) &&
-                  (all(p->iz >= 0.0f) || all(p->iz < 0.0f));
-  p->nx = ix[0] >= 0.0f ? 0 : 8;
-  p->ny = iy[0] >= 0.0f ? 16 : 24;
-  p->nz = iz[0] >= 0.0f ? 32 : 40;
-}
+#ifdef PRISM_BVH_PACKETS
 
 /* Child i of node nf: the lanes of `reach` that meet its box within [tmin,
  * best], and their entry distances (+inf in the other lanes). */
@@ -179,127 +49,11 @@ PRISM_HOT int8 rays8_child(__global const float* nf, int i, int8 reach, const Ra
   return meets;
 }
 
-/* Triangle k of a leaf packet against the eight rays, with packet_intersect's
- * operations (MOLLER_TRUMBORE_LANES) on its lane k: the lanes it meets within
- * (tmin, best] (closed) or (tmin, best) (not), and there t, u and v. The
- * packet is read as float4 words, as packet_intersect reads it (a float
- * pointer into the record reads to a bounds checker as an index past its
- * first member array). */
-PRISM_HOT int8 rays8_triangle(__global const TriPacketGpu* pk, int k, const RayPacket* p, int closed,
-                              float8* t_out, float8* u_out, float8* v_out) {
-  __global const float4* q = (__global const float4*)pk;
-  float8 v0x = (float8)(accel_lane(q[0], k)), v0y = (float8)(accel_lane(q[1], k)), v0z = (float8)(accel_lane(q[2], k));
-  float8 e1x = (float8)(accel_lane(q[3], k)), e1y = (float8)(accel_lane(q[4], k)), e1z = (float8)(accel_lane(q[5], k));
-  float8 e2x = (float8)(accel_lane(q[6], k)), e2y = (float8)(accel_lane(q[7], k)), e2z = (float8)(accel_lane(q[8], k));
-  float8 ox = p->ox, oy = p->oy, oz = p->oz, dx = p->dx, dy = p->dy, dz = p->dz;
-  MOLLER_TRUMBORE_LANES(float8, int8, p->tmin, p->best, closed);
-  *t_out = t;
-  *u_out = u;
-  *v_out = v;
-  return hit;
-}
-
-/* Whether leaf packet pk is tested ray by ray: it holds other kinds of
- * objects, or moving triangles (in object space). */
-PRISM_HOT bool rays8_one_by_one(__global const TriPacketGpu* pk) {
-  return any(vload4(0, pk->prim) < -1) || packet_moves(pk);
-}
-
-/* Closest hits, leaf packet pk, in the lanes of `reach` (those whose own box
- * tests admit the leaf): triangles lane by lane against the eight rays, with
- * accel_accept's rule in every lane; other kinds of objects and moving
- * triangles ray by ray, through packet_closest. */
-PRISM_HOT void rays8_leaf_closest(__global const TriPacketGpu* pk, int8 reach, const RayLanes* r, RayPacket* p,
-                                  const Geometry* geom) {
-  if (rays8_one_by_one(pk)) {
-    int in[8];
-    vstore8(reach, 0, in);
-    float best[8], u[8], v[8];
-    int prim[8];
-    vstore8(p->best, 0, best);
-    vstore8(p->u, 0, u);
-    vstore8(p->v, 0, v);
-    vstore8(p->prim, 0, prim);
-    for (int l = 0; l < PACKET_RAYS; ++l) {
-      if (!in[l]) continue;
-      float3 o = (float3)(r->ox[l], r->oy[l], r->oz[l]), d = (float3)(r->dx[l], r->dy[l], r->dz[l]);
-      PacketRay pr = packet_ray(o, d, r->time[l]);
-      HitGpu h;
-      h.t = prim[l] >= 0 ? best[l] : PRISM_INF;
-      h.prim = prim[l];
-      h.u = u[l];
-      h.v = v[l];
-      packet_closest(pk, &pr, o, d, r->tmin[l], &best[l], &h, geom);
-      prim[l] = h.prim;
-      u[l] = h.u;
-      v[l] = h.v;
-    }
-    p->best = vload8(0, best);
-    p->u = vload8(0, u);
-    p->v = vload8(0, v);
-    p->prim = vload8(0, prim);
-    return;
-  }
-  for (int lane = 0; lane < PACKET_LANES; ++lane) {
-    int id = pk->prim[lane];
-    if (id < 0) continue;
-    float8 t, u, v;
-    int8 ok = rays8_triangle(pk, lane, p, 1, &t, &u, &v) & reach;
-    int8 take = ok & ((t < p->best) | ((t == p->best) & (p->prim >= 0) & ((int8)(id) < p->prim)));
-    p->best = select(p->best, t, take);
-    p->u = select(p->u, u, take);
-    p->v = select(p->v, v, take);
-    p->prim = select(p->prim, (int8)(id), take);
-  }
-}
-
-/* Transmittance: the lanes in `met` have met a primitive of transmittance k.
- * Opaque, they carry 0 and are done; semitransparent, they are done here and
- * walked alone at the end; k_trans 1 changes nothing. */
-PRISM_HOT void rays8_meet(int8 met, float k, RayPacket* p) {
-  if (k == 1.0f) return;
-  if (k == 0.0f)
-    p->light = select(p->light, (float8)(0.0f), met);
-  else
-    p->alone |= met;
-  p->best = select(p->best, (float8)(RAYS8_CLOSED), met);
-}
-
-/* Transmittance, leaf packet pk, in the lanes of `reach`: triangles lane by
- * lane against the eight rays; other kinds of objects and moving triangles ray
- * by ray, through packet_transmittance (a ray whose light it leaves as it was
- * met nothing that counts; any other goes alone, since packet_transmittance's
- * 0 may be a product). */
-PRISM_HOT void rays8_leaf_transmittance(__global const TriPacketGpu* pk, int8 reach, const RayLanes* r,
-                                        RayPacket* p, const Geometry* geom, __global const MaterialGpu* materials) {
-  if (rays8_one_by_one(pk)) {
-    int in[8], alone[8];
-    vstore8(reach & (p->best != (float8)(RAYS8_CLOSED)), 0, in);
-    for (int l = 0; l < PACKET_RAYS; ++l) {
-      alone[l] = 0;
-      if (!in[l]) continue;
-      float3 o = (float3)(r->ox[l], r->oy[l], r->oz[l]), d = (float3)(r->dx[l], r->dy[l], r->dz[l]);
-      PacketRay pr = packet_ray(o, d, r->time[l]);
-      alone[l] = packet_transmittance(pk, &pr, o, d, r->tmin[l], r->tmax[l], 1.0f, 0, geom, materials) != 1.0f ? -1 : 0;
-    }
-    int8 leave = vload8(0, alone);
-    p->alone |= leave;
-    p->best = select(p->best, (float8)(RAYS8_CLOSED), leave);
-    return;
-  }
-  for (int lane = 0; lane < PACKET_LANES; ++lane) {
-    int id = pk->prim[lane];
-    if (id < 0) continue;
-    float8 t, u, v;
-    int8 met = rays8_triangle(pk, lane, p, 0, &t, &u, &v) & reach;
-    if (any(met)) rays8_meet(met, accel_transmit(materials, geom, id), p);
-  }
-}
 
 /* The walk both queries share: children stacked nearest on top with their
  * lanes' entry distances; a popped child skipped when none of those is within
  * its lane's p->best. Ends when the stack is empty or every lane is closed. */
-PRISM_HOT void rays8_walk(ACCEL_PARAMS, __global const MaterialGpu* materials, const RayLanes* r, RayPacket* p,
+PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* materials, const RayLanes* r, RayPacket* p,
                           int transmittance) {
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack_code[PRISM_ACCEL_STACK];
@@ -356,84 +110,6 @@ PRISM_HOT void rays8_walk(ACCEL_PARAMS, __global const MaterialGpu* materials, c
   }
 }
 
-/* rays[0, lanes) (lanes <= 8) into hits[0, lanes), as accel_closest answers each. */
-PRISM_HOT void bvh_packet_closest(ACCEL_PARAMS, __global const RayGpu* rays, int lanes, __global HitGpu* hits) {
-  RayLanes r;
-  rays8_lanes(rays, lanes, &r);
-  float best[8], u[8], v[8];
-  int prim[8];
-  for (int l = 0; l < PACKET_RAYS; ++l) {
-    HitGpu h;
-    accel_miss(&h);
-    best[l] = r.tmax[l];
-    if (r.live & (1 << l)) {
-      float3 o = (float3)(r.ox[l], r.oy[l], r.oz[l]), d = (float3)(r.dx[l], r.dy[l], r.dz[l]);
-      unbounded_closest(geom, accel_unbounded, accel_unbounded_count, o, d, r.time[l], r.tmin[l], &best[l], &h);
-    }
-    u[l] = h.u;
-    v[l] = h.v;
-    prim[l] = h.prim;
-  }
-  RayPacket p;
-  rays8_packet(&r, best, &p);
-  p.u = vload8(0, u);
-  p.v = vload8(0, v);
-  p.prim = vload8(0, prim);
-  if (r.live) rays8_walk(ACCEL_ARGS, 0, &r, &p, 0);
-  vstore8(p.best, 0, best);
-  vstore8(p.u, 0, u);
-  vstore8(p.v, 0, v);
-  vstore8(p.prim, 0, prim);
-  for (int l = 0; l < lanes; ++l) {
-    HitGpu h;
-    accel_miss(&h);
-    if (prim[l] >= 0) {
-      h.t = best[l];
-      h.prim = prim[l];
-      h.u = u[l];
-      h.v = v[l];
-    }
-    hits[l] = h;
-  }
-}
-
-/* The light rays[0, lanes) (lanes <= 8) carry, into carried[0, lanes), as
- * accel_transmittance answers each. */
-PRISM_HOT void bvh_packet_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials,
-                                        __global const RayGpu* rays, int lanes, float* carried) {
-  RayLanes r;
-  rays8_lanes(rays, lanes, &r);
-  float extent[8], light[8];
-  int alone[8];
-  for (int l = 0; l < PACKET_RAYS; ++l) {
-    float c = 1.0f;
-    if (r.live & (1 << l)) {
-      float3 o = (float3)(r.ox[l], r.oy[l], r.oz[l]), d = (float3)(r.dx[l], r.dy[l], r.dz[l]);
-      c = unbounded_transmittance(geom, materials, accel_unbounded, accel_unbounded_count, o, d, r.time[l],
-                                  r.tmin[l], r.tmax[l]);
-    }
-    /* A plane that took some of the light sends the ray alone, and one that
-     * took all of it settles it. */
-    alone[l] = c != 0.0f && c != 1.0f ? -1 : 0;
-    light[l] = c;
-    extent[l] = c == 1.0f ? r.tmax[l] : RAYS8_CLOSED;
-  }
-  RayPacket p;
-  rays8_packet(&r, extent, &p);
-  p.light = vload8(0, light);
-  p.alone = vload8(0, alone);
-  if (any(p.best != (float8)(RAYS8_CLOSED))) rays8_walk(ACCEL_ARGS, materials, &r, &p, 1);
-  vstore8(p.light, 0, light);
-  vstore8(p.alone, 0, alone);
-  for (int l = 0; l < lanes; ++l) {
-    float c = light[l];
-    if (alone[l]) {
-      float3 o = (float3)(r.ox[l], r.oy[l], r.oz[l]), d = (float3)(r.dx[l], r.dy[l], r.dz[l]);
-      c = accel_transmittance(ACCEL_ARGS, materials, o, d, r.time[l], r.tmin[l], r.tmax[l]);
-    }
-    carried[l] = c;
-  }
-}
 
 #endif
 #endif

@@ -109,7 +109,7 @@ PRISM_HOT void accel_accept(float t, float u, float v, int prim, float* best, Hi
 
 /* Moller-Trumbore in lanes of vector type V (mask type M): four triangles
  * against one ray (packet_intersect) or one triangle against eight rays
- * (accel/bvh_packets.h), the same operations in the same order, so both give
+ * (accel/rays8.h), the same operations in the same order, so both give
  * the same t, u, v bits. Reads V v0x..v0z, e1x..e2z, ox..oz and dx..dz;
  * declares V t, u, v and M hit, the lanes met within (tmin, tlimit] (or
  * (tmin, tlimit) when `closed` is 0). The mask is a select, not ~reject &
