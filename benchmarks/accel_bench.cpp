@@ -120,6 +120,7 @@ long structureColour(const std::string& s) {
   if (s == "bvh-kdop") return 0x56B4E9;
   if (s == "bvh-kobj") return 0xE69F00;
   if (s == "bvh-1ray") return 0x999999;
+  if (s == "octree-1ray") return 0xF0A070;
   return 0x000000;
 }
 
@@ -226,14 +227,15 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     std::vector<std::unique_ptr<RayQueryEngine>> engines;
     struct Variant {
       AccelKind kind;
-      const char* name;
+      std::string name;
       bool kdop_objects, kdop_bvh;
       PacketUse packets;
     };
     std::vector<Variant> variants;
     for (AccelKind kind : options.structures)
       variants.push_back({kind, accelName(kind), false, false, PacketUse::WherePays});
-    if (options.bvh_one_ray) variants.push_back({AccelKind::Bvh, "bvh-1ray", false, false, PacketUse::Never});
+    for (AccelKind kind : options.one_ray)
+      variants.push_back({kind, std::string(accelName(kind)) + "-1ray", false, false, PacketUse::Never});
     if (options.bvh_kdop) variants.push_back({AccelKind::Bvh, "bvh-kdop", true, true, PacketUse::WherePays});
     if (options.bvh_kdop_objects) variants.push_back({AccelKind::Bvh, "bvh-kobj", true, false, PacketUse::WherePays});
     for (const Variant& v : variants) {

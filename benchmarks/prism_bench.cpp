@@ -45,11 +45,12 @@ const char* kUsage =
     "options:\n"
     "  --device D          OpenCL device: index, cpu, gpu or a name substring\n"
     "  --sizes N,...       generated tori of about N triangles each (k and M suffixes allowed)\n"
-    "  --structures LIST   comma-separated among bvh, bvh-1ray (the BVH walked one ray a\n"
-    "                      work-item on every column, as on a GPU; bvh takes the camera and\n"
-    "                      shadow rays eight at a time on a CPU), bvh-kdop (the BVH with\n"
-    "                      \"set of normals\" bounds on its nodes and its objects), bvh-kobj\n"
-    "                      (on its objects only), octree, bsp, none (default bvh,octree,bsp)\n"
+    "  --structures LIST   comma-separated among bvh, octree, bsp, none (default\n"
+    "                      bvh,octree,bsp); bvh-1ray and octree-1ray (the structure walked\n"
+    "                      one ray a work-item on every column, as on a GPU; bvh and octree\n"
+    "                      take the camera and shadow rays eight at a time on a CPU);\n"
+    "                      bvh-kdop (the BVH with \"set of normals\" bounds on its nodes and\n"
+    "                      its objects), bvh-kobj (on its objects only)\n"
     "  --out DIR           where accel.csv, accel.json and the PNG plots go (default bench-out)\n"
     "  --camera N          N x N primary rays (default 1024)\n"
     "  --random N          incoherent random rays (default 1048576)\n"
@@ -159,10 +160,12 @@ int main(int argc, char** argv) {
         else if (s == "bvh-kobj")
           options.bvh_kdop_objects = true;
         else if (s == "bvh-1ray")
-          options.bvh_one_ray = true;
+          options.one_ray.push_back(prism::AccelKind::Bvh);
+        else if (s == "octree-1ray")
+          options.one_ray.push_back(prism::AccelKind::Octree);
         else if (!prism::tryParseAccelKind(s, &kind))
           usageError("--structures: unknown structure '" + s +
-                     "' (expected bvh, bvh-1ray, bvh-kdop, bvh-kobj, octree, bsp or none)");
+                     "' (expected bvh, bvh-1ray, bvh-kdop, bvh-kobj, octree, octree-1ray, bsp or none)");
         else
           options.structures.push_back(kind);
       }

@@ -6,10 +6,13 @@ namespace prism {
 
 namespace {
 
-// The BVH, without linear motion bounds (the packet walk reads a node's boxes
-// at one instant) or k-DOP node bounds (whose slabs it does not test).
+// The structures with a packet walk (kernels/accel/packet_queries.h): the
+// octree, and the BVH without linear motion bounds (its packet walk reads a
+// node's boxes at one instant) or k-DOP node bounds (whose slabs it does not
+// test).
 bool packetsWalk(const DeviceAccel& accel) {
   const std::string& o = accel.kernel_options;
+  if (accel.kind == AccelKind::Octree) return true;
   return accel.kind == AccelKind::Bvh && o.find("-DPRISM_BVH_MOTION") == std::string::npos &&
          o.find("-DPRISM_BVH_KDOP") == std::string::npos;
 }
@@ -22,7 +25,10 @@ bool packetsPay(const DeviceAccel& accel, const DeviceDescription& device) {
 
 RayKernel::RayKernel(Context& context, const DeviceAccel& accel, const char* entry_file, const char* name,
                      PacketUse use)
-    : m_context(&context), m_primitives(accel.stats.primitives), m_use(use) {
+    : m_context(&context),
+      m_primitives(accel.stats.primitives),
+      m_prims_per_ray(accel.kind == AccelKind::Octree ? kOctreePacketPrimsPerRay : kBvhPacketPrimsPerRay),
+      m_use(use) {
   m_single = context.kernel(entry_file, name, accel.kernel_options);
   const bool compile = use == PacketUse::Always      ? packetsWalk(accel)
                        : use == PacketUse::WherePays ? packetsPay(accel, context.device())
@@ -34,7 +40,7 @@ RayKernel::RayKernel(Context& context, const DeviceAccel& accel, const char* ent
 bool RayKernel::packets(RayCoherence coherence, std::uint64_t view_rays) const {
   return m_packets && coherence == RayCoherence::Coherent &&
          (m_use == PacketUse::Always ||
-          static_cast<double>(m_primitives) <= kPacketPrimsPerRay * static_cast<double>(view_rays));
+          static_cast<double>(m_primitives) <= m_prims_per_ray * static_cast<double>(view_rays));
 }
 
 KernelLaunch RayKernel::launch(bool packets) const { return m_context->launch(packets ? m_packets : m_single); }

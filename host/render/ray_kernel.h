@@ -1,7 +1,7 @@
 // A ray query's kernels for one acceleration structure, and which of them a
 // queue of rays goes to. `extend` and `occlude` give each ray a work-item of
 // its own; their `_packets` twins (kernels/accel/packet_queries.h) walk the BVH
-// with eight neighbouring rays at once. That pays for rays that travel alike,
+// or the octree with eight neighbouring rays at once. That pays for rays that travel alike,
 // such as camera rays in sample order or the shadow rays of one shaded point,
 // and costs for rays that do not (random rays run at about half the speed).
 // On a GPU each work-item's eight lanes run one after another, so there the
@@ -29,20 +29,28 @@ constexpr std::size_t kPacketRays = 8;
 // Packets pay while the scene's bounded primitives are at most this many per
 // ray of the view (a frame's samples, a query's rays): with denser geometry,
 // neighbouring rays part in different leaves. Measured with `prism-bench
-// accel --structures bvh,bvh-1ray` (docs/accel.md, "Coherent rays in
-// packets"): camera rays 1.4x faster at 0.066 and 0.265 primitives a ray,
-// 1.14x at 1.06 and 0.8x at 4.2; shadow rays 1.28x at 0.066, level at 0.265,
-// 0.64x at 1.06.
-constexpr double kPacketPrimsPerRay = 0.25;
+// accel --structures bvh,bvh-1ray,octree,octree-1ray` (docs/accel.md,
+// "Coherent rays in packets"), packets against one ray a work-item:
+// - the BVH: camera rays 1.4x faster at 0.066 and 0.265 primitives a ray,
+//   1.14x at 1.06 and 0.8x at 4.2; shadow rays 1.28x at 0.066, level at
+//   0.265, 0.64x at 1.06;
+// - the octree, whose packets test one box a cell where one ray sorts the
+//   octants it passes: camera rays 1.7x at 0.265, 1.35-1.41x at 1.06, 1.18x
+//   at 2.1 and 0.94x at 4.2; shadow rays 1.17x at 0.265, 1.04-1.09x at 1.06,
+//   0.89x at 2.1.
+constexpr double kBvhPacketPrimsPerRay = 0.25;
+constexpr double kOctreePacketPrimsPerRay = 1.0;
 
-// Whether coherent rays through `accel` on `device` go in packets: the BVH
-// (without linear motion bounds, whose boxes the packet walk reads at one
-// instant, or k-DOP node bounds, whose slabs it does not test), on a CPU device.
+// Whether coherent rays through `accel` on `device` go in packets: through the
+// octree, or the BVH (without linear motion bounds, whose boxes the packet walk
+// reads at one instant, or k-DOP node bounds, whose slabs it does not test), on
+// a CPU device.
 bool packetsPay(const DeviceAccel& accel, const DeviceDescription& device);
 
 // Where coherent rays go in packets: where they pay, on any device the
 // structure allows (the tests check the packet walks on whatever device they
-// run on), or nowhere (prism-bench's bvh-1ray, the walk a GPU takes).
+// run on), or nowhere (prism-bench's bvh-1ray and octree-1ray, the walks a GPU
+// takes).
 enum class PacketUse { WherePays, Always, Never };
 
 class RayKernel {
@@ -53,7 +61,7 @@ class RayKernel {
             PacketUse use = PacketUse::WherePays);
 
   // Whether rays of this coherence go in packets, `view_rays` rays sharing the
-  // view (kPacketPrimsPerRay; PacketUse::Always: whatever their number).
+  // view (k*PacketPrimsPerRay; PacketUse::Always: whatever their number).
   bool packets(RayCoherence coherence, std::uint64_t view_rays) const;
   // A launch: add the kernel's arguments, then run(workItems(rays, packets)).
   KernelLaunch launch(bool packets) const;
@@ -64,6 +72,7 @@ class RayKernel {
   Context* m_context = nullptr;
   cl_kernel m_single = nullptr, m_packets = nullptr;
   std::size_t m_primitives = 0;  // bounded ones, in the structure
+  double m_prims_per_ray = 0;    // where packets stop paying (k*PacketPrimsPerRay)
   PacketUse m_use = PacketUse::WherePays;
 };
 

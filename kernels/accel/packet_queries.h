@@ -20,12 +20,16 @@
 #if defined(PRISM_ACCEL_BVH) && !defined(PRISM_BVH_MOTION) && !defined(PRISM_BVH_KDOP)
 #define PRISM_BVH_PACKETS
 #define PACKET_RAYS 8
+#elif defined(PRISM_ACCEL_OCTREE)
+#define PRISM_OCTREE_PACKETS
+#define PACKET_RAYS 8
 #endif
 
 /* Each included outside any #if: the host's include resolver inlines a file
  * once, so its first inclusion must not sit in a skipped branch. */
 #include "accel/rays8.h"
 #include "accel/bvh_packets.h"
+#include "accel/octree_packets.h"
 
 #ifdef PACKET_RAYS
 

@@ -135,7 +135,7 @@ void checkIdentical(const char* what, const std::vector<HitGpu>& ref, const std:
   CHECK(differ == 0);
 }
 
-// The BVH's packet walk against its walk of one ray at a time, on all of
+// A structure's packet walk against its walk of one ray at a time, on all of
 // `rays` and on a stretch of them starting three rays later, whose packets
 // hold other rays together (and whose last packet is not full).
 void checkPackets(RayQueryEngine& engine, const std::vector<QueryRay>& rays, const std::vector<HitGpu>& single) {
@@ -250,11 +250,19 @@ void checkScene(const AccelScene& scene, std::size_t random_count, int camera_si
     checkCarried("bvh against none", none.transmittance(toRayGpu(shadow_sample)), everyNth(bvh_carried, step));
   }
   for (AccelKind kind : {AccelKind::Octree, AccelKind::Bsp}) {
-    RayQueryEngine engine(context, scene.objects, kind, scene.materials);
+    RayQueryEngine engine(context, scene.objects, kind, scene.materials, {}, PacketUse::Always);
     INFO(describeAccel(engine.accel()));
-    checkHits(scene, "against bvh", rays, bvh_hits, engine.intersect(rays));
-    checkOcclusion("against bvh", bvh_occluded, engine.occluded(shadows));
-    checkCarried("against bvh", bvh_carried, engine.transmittance(shadow_rays));
+    const std::vector<HitGpu> hits = engine.intersect(rays);
+    const std::vector<std::uint8_t> occluded = engine.occluded(shadows);
+    const std::vector<float> carried = engine.transmittance(shadow_rays);
+    checkHits(scene, "against bvh", rays, bvh_hits, hits);
+    checkOcclusion("against bvh", bvh_occluded, occluded);
+    checkCarried("against bvh", bvh_carried, carried);
+    CHECK(engine.tracesPackets() == (kind == AccelKind::Octree));
+    if (engine.tracesPackets()) {
+      checkPackets(engine, rays, hits);
+      checkShadowPackets(engine, shadow_rays, occluded, carried);
+    }
   }
   {
     // The same tree with "set of normals" bounds: only the node tests differ.
@@ -457,8 +465,8 @@ TEST_CASE("closest hits at exact ties and a few ulps apart: every structure answ
     INFO(accelName(kind) << ": " << differ << " of " << ref.size() << " rays differ; " << on_plane
                          << " reference hits on the plane");
     CHECK(differ == 0);
-    if (kind == AccelKind::Bvh)  // its packet walk, where ties between packet mates' triangles abound
-      checkIdentical("bvh packets against none", ref, engine.intersect(tiny.rays, nullptr, RayCoherence::Coherent));
+    if (engine.tracesPackets())  // the packet walks, where ties between packet mates' triangles abound
+      checkIdentical("packets against none", ref, engine.intersect(tiny.rays, nullptr, RayCoherence::Coherent));
   }
 }
 
@@ -655,10 +663,12 @@ TEST_CASE("rays with NaN or infinite parts, or no direction, are misses in every
   }
 }
 
-TEST_CASE("coherent rays go in packets through the BVH on a CPU only, never with linear motion or k-DOP bounds",
+TEST_CASE("coherent rays go in packets through the BVH and the octree on a CPU only, never with the BVH's linear "
+          "motion or k-DOP bounds",
           "[accel]") {
-  // The packet walk reads a node's boxes at shutter open (accel/bvh_packets.h)
-  // and runs its eight lanes one after another on a GPU.
+  // The BVH's packet walk reads a node's boxes at shutter open
+  // (accel/bvh_packets.h); a packet's eight lanes run one after another on a
+  // GPU.
   DeviceDescription cpu, gpu;
   cpu.type = CL_DEVICE_TYPE_CPU;
   gpu.type = CL_DEVICE_TYPE_GPU;
@@ -666,7 +676,7 @@ TEST_CASE("coherent rays go in packets through the BVH on a CPU only, never with
   for (AccelKind kind : allAccelKinds()) {
     const std::unique_ptr<DeviceAccel> accel = buildAccel(kind, scene.objects);
     INFO(accelName(kind));
-    CHECK(packetsPay(*accel, cpu) == (kind == AccelKind::Bvh));
+    CHECK(packetsPay(*accel, cpu) == (kind == AccelKind::Bvh || kind == AccelKind::Octree));
     CHECK_FALSE(packetsPay(*accel, gpu));
   }
   DeviceAccel moving = *buildAccel(AccelKind::Bvh, scene.objects);
@@ -701,29 +711,32 @@ TEST_CASE("shadow rays in packets through a semitransparent plane and triangles 
       q.dz = 3 - q.oz;
       rays.push_back(toRayGpu({q})[0]);
     }
-  RayQueryEngine engine(sharedContext(), scene.objects, AccelKind::Bvh, scene.materials, {}, PacketUse::Always);
-  const std::vector<float> carried = engine.transmittance(rays);
-  std::size_t dark = 0, clear = 0, plane_only = 0, more = 0, part = 0;
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    const float c = carried[i];
-    dark += c == 0.0f;
-    clear += c == 1.0f;
-    plane_only += c == 0.5f;
-    more += c > 0.0f && c < 0.5f;
-    // Beside the plane, through semitransparent triangles: met inside the walk.
-    part += rays[i].ox > 0.25f && c > 0.0f && c < 1.0f;
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree}) {
+    RayQueryEngine engine(sharedContext(), scene.objects, kind, scene.materials, {}, PacketUse::Always);
+    const std::vector<float> carried = engine.transmittance(rays);
+    std::size_t dark = 0, clear = 0, plane_only = 0, more = 0, part = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const float c = carried[i];
+      dark += c == 0.0f;
+      clear += c == 1.0f;
+      plane_only += c == 0.5f;
+      more += c > 0.0f && c < 0.5f;
+      // Beside the plane, through semitransparent triangles: met inside the walk.
+      part += rays[i].ox > 0.25f && c > 0.0f && c < 1.0f;
+    }
+    INFO(accelName(kind) << ": " << dark << " rays blocked, " << clear << " clear, " << plane_only
+                         << " through the plane alone, " << more << " through it and more, " << part
+                         << " through triangles only");
+    CHECK(dark > 0);
+    CHECK(clear > 0);
+    CHECK(plane_only > 0);
+    CHECK(more > 0);
+    CHECK(part > 0);
+    checkShadowPackets(engine, rays, engine.occluded(rays), carried);
   }
-  INFO(dark << " rays blocked, " << clear << " clear, " << plane_only << " through the plane alone, " << more
-            << " through it and more, " << part << " through triangles only");
-  CHECK(dark > 0);
-  CHECK(clear > 0);
-  CHECK(plane_only > 0);
-  CHECK(more > 0);
-  CHECK(part > 0);
-  checkShadowPackets(engine, rays, engine.occluded(rays), carried);
 }
 
-TEST_CASE("the packet walks answer as one ray at a time on any device the BVH allows", "[accel][packets]") {
+TEST_CASE("the packet walks answer as one ray at a time on any device", "[accel][packets]") {
   // PacketUse::Always: on whatever device the tests run (PRISM_TEST_DEVICE).
   AccelScene scene = mixedScene(200);
   const Aabb box = boundsOf(scene.objects);
@@ -731,14 +744,16 @@ TEST_CASE("the packet walks answer as one ray at a time on any device the BVH al
   const std::vector<QueryRay> random = randomRays(box, 60, 3), aimed = vertexRays(scene.objects, 13, 4);
   rays.insert(rays.end(), random.begin(), random.end());
   rays.insert(rays.end(), aimed.begin(), aimed.end());
-  RayQueryEngine engine(sharedContext(), scene.objects, AccelKind::Bvh, scene.materials, {}, PacketUse::Always);
-  const std::vector<HitGpu> hits = engine.intersect(rays);
-  checkPackets(engine, rays, hits);
-  // To a light above, and to one behind the semitransparent wall plane (z
-  // about -1.5), which sends every feeler on alone.
-  const float above[3] = {box.hi[0] + 1, box.hi[1] + 2, box.hi[2] + 1.5f}, behind[3] = {0.5f, 0.5f, -3};
-  for (const float* light : {above, behind}) {
-    const std::vector<RayGpu> shadows = toRayGpu(shadowRays(rays, hits, light));
-    checkShadowPackets(engine, shadows, engine.occluded(shadows), engine.transmittance(shadows));
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree}) {
+    RayQueryEngine engine(sharedContext(), scene.objects, kind, scene.materials, {}, PacketUse::Always);
+    const std::vector<HitGpu> hits = engine.intersect(rays);
+    checkPackets(engine, rays, hits);
+    // To a light above, and to one behind the semitransparent wall plane (z
+    // about -1.5), which sends every feeler on alone.
+    const float above[3] = {box.hi[0] + 1, box.hi[1] + 2, box.hi[2] + 1.5f}, behind[3] = {0.5f, 0.5f, -3};
+    for (const float* light : {above, behind}) {
+      const std::vector<RayGpu> shadows = toRayGpu(shadowRays(rays, hits, light));
+      checkShadowPackets(engine, shadows, engine.occluded(shadows), engine.transmittance(shadows));
+    }
   }
 }
