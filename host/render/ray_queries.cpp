@@ -66,14 +66,16 @@ RayQueryEngine::RayQueryEngine(Context& context, SceneGeometry geometry, AccelKi
   m_occlude = RayKernel(context, *m_accel, "occlude.cl", "occlude", packets);
   // PoCL finishes compiling a kernel at its first launch with a new work-group
   // size (PERF-NOTES); one tiny launch of each keeps that out of the timings.
+  // The packet kernels are launched directly: one ray is too few for the
+  // density rule to send it there.
   RayGpu probe{};
   probe.dz = 1.0f;
   probe.tmax = 1.0f;
-  intersect(std::vector<RayGpu>{probe});
-  runOcclude(std::vector<RayGpu>{probe}, m_has_materials, nullptr, RayCoherence::Scattered);
-  if (tracesPackets()) {
-    intersect(std::vector<RayGpu>{probe}, nullptr, RayCoherence::Coherent);
-    runOcclude(std::vector<RayGpu>{probe}, m_has_materials, nullptr, RayCoherence::Coherent);
+  const std::vector<RayGpu> probes{probe};
+  for (bool packets : {false, true}) {
+    if (packets && !tracesPackets()) break;
+    runExtend(probes, nullptr, packets);
+    runOcclude(probes, m_has_materials, nullptr, packets);
   }
   m_compile_seconds = secondsSince(start);
 }
@@ -85,8 +87,11 @@ std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<QueryRay>& rays,
 
 std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, double* trace_seconds,
                                               RayCoherence coherence) {
+  return runExtend(rays, trace_seconds, m_extend.packets(coherence, rays.size()));
+}
+
+std::vector<HitGpu> RayQueryEngine::runExtend(const std::vector<RayGpu>& rays, double* trace_seconds, bool packets) {
   std::vector<HitGpu> hits(rays.size());
-  const bool packets = m_extend.packets(coherence, rays.size());
   double seconds = 0;
   const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
   Buffer ray_buffer(m_context, batch * sizeof(RayGpu));
@@ -107,9 +112,8 @@ std::vector<HitGpu> RayQueryEngine::intersect(const std::vector<RayGpu>& rays, d
 }
 
 std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, bool with_materials,
-                                              double* trace_seconds, RayCoherence coherence) {
+                                              double* trace_seconds, bool packets) {
   std::vector<float> carried(rays.size());
-  const bool packets = m_occlude.packets(coherence, rays.size());
   double seconds = 0;
   const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
   Buffer ray_buffer(m_context, batch * sizeof(RayGpu));
@@ -144,7 +148,7 @@ std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<QueryRay>& 
 
 std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<RayGpu>& rays, double* trace_seconds,
                                                    RayCoherence coherence) {
-  std::vector<float> carried = runOcclude(rays, false, trace_seconds, coherence);
+  std::vector<float> carried = runOcclude(rays, false, trace_seconds, m_occlude.packets(coherence, rays.size()));
   std::vector<std::uint8_t> result(carried.size());
   for (std::size_t i = 0; i < carried.size(); ++i) result[i] = carried[i] == 0.0f ? 1 : 0;
   return result;
@@ -152,7 +156,7 @@ std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<RayGpu>& ra
 
 std::vector<float> RayQueryEngine::transmittance(const std::vector<RayGpu>& rays, double* trace_seconds,
                                                  RayCoherence coherence) {
-  return runOcclude(rays, m_has_materials, trace_seconds, coherence);
+  return runOcclude(rays, m_has_materials, trace_seconds, m_occlude.packets(coherence, rays.size()));
 }
 
 TraceResult traceRays(Context& context, SceneGeometry geometry, AccelKind kind, const std::vector<QueryRay>& rays,

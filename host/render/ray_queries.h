@@ -84,8 +84,10 @@ class RayQueryEngine {
   static constexpr std::size_t kBatchRays = std::size_t(1) << 22;
 
  private:
+  // The queries through the chosen kernel (`packets`: the `_packets` twin).
+  std::vector<HitGpu> runExtend(const std::vector<RayGpu>& rays, double* trace_seconds, bool packets);
   std::vector<float> runOcclude(const std::vector<RayGpu>& rays, bool with_materials, double* trace_seconds,
-                                RayCoherence coherence);
+                                bool packets);
 
   Context& m_context;
   SceneGeometry m_geometry;
