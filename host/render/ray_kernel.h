@@ -36,8 +36,8 @@ constexpr std::size_t kPacketRays = 8;
 //   0.265, 0.64x at 1.06;
 // - the octree, whose packets test one box a cell where one ray sorts the
 //   octants it passes: camera rays 1.7x at 0.265, 1.35-1.41x at 1.06, 1.18x
-//   at 2.1 and 0.94x at 4.2; shadow rays 1.17x at 0.265, 1.04-1.09x at 1.06,
-//   0.89x at 2.1.
+//   at 2.1 and 0.94x at 4.2; shadow rays 0.92-1.54x at 0.066 (five runs),
+//   1.17x at 0.265, 1.04-1.09x at 1.06, 0.89x at 2.1.
 constexpr double kBvhPacketPrimsPerRay = 0.25;
 constexpr double kOctreePacketPrimsPerRay = 1.0;
 

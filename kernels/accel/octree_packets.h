@@ -35,9 +35,10 @@
 
 #ifdef PRISM_OCTREE_PACKETS
 
-/* The lanes that meet cell n's content box and enter it no later than their
- * best hit (by more than the slack octree_next_leaf allows, accel_before);
- * the box's far end widened as octree_far widens it. */
+/* The lanes that meet cell n's content box and do not enter it after their
+ * best hit (by more than the slack octree_next_leaf allows: accel_before,
+ * whose test is negated as it stands, NaN included); the box's far end
+ * widened as octree_far widens it. */
 PRISM_HOT int8 rays8_cell(__global const OctreeNodeGpu* n, const RayPacket* p) {
   float8 ax = ((float8)(n->lo_x) - p->ox) * p->ix, bx = ((float8)(n->hi_x) - p->ox) * p->ix;
   float8 ay = ((float8)(n->lo_y) - p->oy) * p->iy, by = ((float8)(n->hi_y) - p->oy) * p->iy;
@@ -45,7 +46,7 @@ PRISM_HOT int8 rays8_cell(__global const OctreeNodeGpu* n, const RayPacket* p) {
   float8 near_t = rays8_max(rays8_max(rays8_min(ax, bx), rays8_min(ay, by)), rays8_max(rays8_min(az, bz), p->tmin));
   float8 far_t = rays8_min(rays8_min(rays8_max(ax, bx), rays8_max(ay, by)), rays8_max(az, bz));
   far_t *= select((float8)(2.0f - ACCEL_FAR_SCALE), (float8)(ACCEL_FAR_SCALE), far_t >= 0.0f);
-  return (near_t <= far_t) & (p->best >= near_t - ACCEL_CELL_EPS * fabs(near_t));
+  return (near_t <= far_t) & !(p->best < near_t - ACCEL_CELL_EPS * fabs(near_t));
 }
 
 PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* materials, const RayLanes* r,
