@@ -99,7 +99,10 @@ struct Contender {
   // (Embree's rtcIntersect1 takes every ray alone, coherent or not.)
   std::function<std::vector<HitGpu>(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*, RayCoherence)>
       intersect;
-  std::function<void(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*, RayCoherence)> occluded;
+  // (view_rays: for RayQueryEngine's density rule, the camera rays whose hits the feelers start from)
+  std::function<void(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*, RayCoherence,
+                     std::uint64_t view_rays)>
+      occluded;
 };
 
 double mrays(std::size_t rays, double seconds) { return seconds > 0 ? rays / seconds / 1e6 : kNaN; }
@@ -217,9 +220,8 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       c.intersect = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s, RayCoherence) {
         return ref->intersect(q, s);
       };
-      c.occluded = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s, RayCoherence) {
-        ref->occluded(q, s);
-      };
+      c.occluded = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s, RayCoherence,
+                          std::uint64_t) { ref->occluded(q, s); };
       contenders.push_back(std::move(c));
       have_embree = true;
     }
@@ -263,8 +265,8 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
                              RayCoherence coherence) { return engine->intersect(g, s, coherence);
       };
       c.occluded = [engine](const std::vector<QueryRay>&, const std::vector<RayGpu>& g, double* s,
-                            RayCoherence coherence) {
-        engine->occluded(g, s, coherence);
+                            RayCoherence coherence, std::uint64_t view_rays) {
+        engine->occluded(g, s, coherence, view_rays);
       };
       contenders.push_back(std::move(c));
     }
@@ -306,13 +308,13 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     const std::vector<RayGpu> shadows_gpu = toRayGpu(shadows);
 
     auto timeAll = [&](const std::vector<QueryRay>& rays, const std::vector<RayGpu>& rays_gpu, bool occlusion,
-                       RayCoherence coherence) {
+                       RayCoherence coherence, std::uint64_t view_rays) {
       std::vector<std::function<double()>> runs;
       for (Contender& c : contenders)
-        runs.push_back([&c, &rays, &rays_gpu, occlusion, coherence] {
+        runs.push_back([&c, &rays, &rays_gpu, occlusion, coherence, view_rays] {
           double s;
           if (occlusion)
-            c.occluded(rays, rays_gpu, &s, coherence);
+            c.occluded(rays, rays_gpu, &s, coherence, view_rays);
           else
             c.intersect(rays, rays_gpu, &s, coherence);
           return s;
@@ -324,10 +326,13 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     };
     // Camera rays in pixel order travel alike, as a render's do, and so do
     // the shadow rays from their hits to one light: both go in packets where
-    // the structure and device take them (render/ray_kernel.h).
-    const std::vector<double> primary_mrays = timeAll(primary, primary_gpu, false, RayCoherence::Coherent);
-    const std::vector<double> shadow_mrays = timeAll(shadows, shadows_gpu, true, RayCoherence::Coherent);
-    const std::vector<double> random_mrays = timeAll(random, random_gpu, false, RayCoherence::Scattered);
+    // the structure and device take them (render/ray_kernel.h). The shadow
+    // rays' view is the camera's, as for a render's feelers: the density rule
+    // counts the frame's samples, not the hits among them.
+    const std::vector<double> primary_mrays = timeAll(primary, primary_gpu, false, RayCoherence::Coherent, 0);
+    const std::vector<double> shadow_mrays =
+        timeAll(shadows, shadows_gpu, true, RayCoherence::Coherent, primary.size());
+    const std::vector<double> random_mrays = timeAll(random, random_gpu, false, RayCoherence::Scattered, 0);
 
     for (std::size_t i = 0; i < contenders.size(); ++i) {
       BenchRow& row = contenders[i].row;

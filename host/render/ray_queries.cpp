@@ -142,21 +142,23 @@ std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, b
 }
 
 std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<QueryRay>& rays, double* trace_seconds,
-                                                   RayCoherence coherence) {
-  return occluded(toRayGpu(rays), trace_seconds, coherence);
+                                                   RayCoherence coherence, std::uint64_t view_rays) {
+  return occluded(toRayGpu(rays), trace_seconds, coherence, view_rays);
 }
 
 std::vector<std::uint8_t> RayQueryEngine::occluded(const std::vector<RayGpu>& rays, double* trace_seconds,
-                                                   RayCoherence coherence) {
-  std::vector<float> carried = runOcclude(rays, false, trace_seconds, m_occlude.packets(coherence, rays.size()));
+                                                   RayCoherence coherence, std::uint64_t view_rays) {
+  const bool packets = m_occlude.packets(coherence, view_rays ? view_rays : rays.size());
+  std::vector<float> carried = runOcclude(rays, false, trace_seconds, packets);
   std::vector<std::uint8_t> result(carried.size());
   for (std::size_t i = 0; i < carried.size(); ++i) result[i] = carried[i] == 0.0f ? 1 : 0;
   return result;
 }
 
 std::vector<float> RayQueryEngine::transmittance(const std::vector<RayGpu>& rays, double* trace_seconds,
-                                                 RayCoherence coherence) {
-  return runOcclude(rays, m_has_materials, trace_seconds, m_occlude.packets(coherence, rays.size()));
+                                                 RayCoherence coherence, std::uint64_t view_rays) {
+  const bool packets = m_occlude.packets(coherence, view_rays ? view_rays : rays.size());
+  return runOcclude(rays, m_has_materials, trace_seconds, packets);
 }
 
 TraceResult traceRays(Context& context, SceneGeometry geometry, AccelKind kind, const std::vector<QueryRay>& rays,

@@ -65,13 +65,16 @@ class RayQueryEngine {
   // Whether coherent rays go in packets here.
   bool tracesPackets() const { return m_extend.hasPackets() && m_occlude.hasPackets(); }
   // 1 where something lies strictly between tmin and tmax along the ray.
+  // `view_rays`: for feelers from the hits of a view (a frame's samples, a
+  // query's camera rays), that view's rays, which the density rule of packets
+  // counts as the renderer does (render/ray_kernel.h); 0: these rays.
   std::vector<std::uint8_t> occluded(const std::vector<QueryRay>& rays, double* trace_seconds = nullptr,
-                                     RayCoherence coherence = RayCoherence::Scattered);
+                                     RayCoherence coherence = RayCoherence::Scattered, std::uint64_t view_rays = 0);
   std::vector<std::uint8_t> occluded(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr,
-                                     RayCoherence coherence = RayCoherence::Scattered);
+                                     RayCoherence coherence = RayCoherence::Scattered, std::uint64_t view_rays = 0);
   // Light carried from tmin to tmax, as the renderer's shadow feelers see it.
   std::vector<float> transmittance(const std::vector<RayGpu>& rays, double* trace_seconds = nullptr,
-                                   RayCoherence coherence = RayCoherence::Scattered);
+                                   RayCoherence coherence = RayCoherence::Scattered, std::uint64_t view_rays = 0);
 
   const DeviceAccel& accel() const { return *m_accel; }
   const SceneGeometry& geometry() const { return m_geometry; }
