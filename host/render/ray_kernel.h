@@ -39,7 +39,9 @@ constexpr std::size_t kPacketRays = 8;
 //   at 2.1 and 0.94x at 4.2; shadow rays 0.92-1.54x at 0.066 (five runs),
 //   1.17x at 0.265, 1.04-1.09x at 1.06, 0.89x at 2.1.
 constexpr double kBvhPacketPrimsPerRay = 0.25;
-constexpr double kOctreePacketPrimsPerRay = 1.0;
+// The octree's shadow rays break even between 1.06 and 2.1 (about 1.35 by
+// linear interpolation), its camera rays at about 3.6.
+constexpr double kOctreePacketPrimsPerRay = 1.25;
 
 // Whether coherent rays through `accel` on `device` go in packets: through the
 // octree, or the BVH (without linear motion bounds, whose boxes the packet walk
