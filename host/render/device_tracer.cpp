@@ -98,7 +98,7 @@ void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats, bool mark_a
   m_geometry.upload(m_context, gpu);
   m_accel.upload(m_context, accel);
   m_accel_bytes = accel.stats.bytes;
-  m_extend = RayKernel(m_context, accel, "extend.cl", "extend");
+  m_extend = RayKernel(m_context, accel, RayQuery::ClosestHits);
   // The frame's samples share the view: they say how dense the geometry is
   // beside the camera rays and a point's feelers (render/ray_kernel.h).
   const std::uint64_t view_rays = static_cast<std::uint64_t>(pixels) * std::max(1, frame.sampling.spp);
@@ -121,7 +121,7 @@ void DeviceTracer::load(const FrameSetup& frame, RenderStats& stats, bool mark_a
   m_feeler_packets = false;
   if (m_shadow_slots > 0) {
     m_spawn_shadows = m_context.kernel("spawn_shadows.cl", "spawn_shadows", features.shadows);
-    m_occlude = RayKernel(m_context, accel, "occlude.cl", "occlude");
+    m_occlude = RayKernel(m_context, accel, RayQuery::Transmittance);
     m_feeler_packets = m_occlude.packets(RayCoherence::Coherent, view_rays);
   }
   if (m_zbuffer) {

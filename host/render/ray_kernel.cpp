@@ -19,16 +19,23 @@ bool packetsWalk(const DeviceAccel& accel) {
 
 }  // namespace
 
+double packetPrimsPerRay(AccelKind kind, RayQuery query) {
+  const bool closest = query == RayQuery::ClosestHits;
+  if (kind == AccelKind::Octree) return closest ? 2.0 : 1.25;
+  return closest ? 1.5 : 0.25;
+}
+
 bool packetsPay(const DeviceAccel& accel, const DeviceDescription& device) {
   return packetsWalk(accel) && (device.type & CL_DEVICE_TYPE_CPU) != 0;
 }
 
-RayKernel::RayKernel(Context& context, const DeviceAccel& accel, const char* entry_file, const char* name,
-                     PacketUse use)
+RayKernel::RayKernel(Context& context, const DeviceAccel& accel, RayQuery query, PacketUse use)
     : m_context(&context),
       m_primitives(accel.stats.primitives),
-      m_prims_per_ray(accel.kind == AccelKind::Octree ? kOctreePacketPrimsPerRay : kBvhPacketPrimsPerRay),
+      m_prims_per_ray(packetPrimsPerRay(accel.kind, query)),
       m_use(use) {
+  const char* entry_file = query == RayQuery::ClosestHits ? "extend.cl" : "occlude.cl";
+  const char* name = query == RayQuery::ClosestHits ? "extend" : "occlude";
   m_single = context.kernel(entry_file, name, accel.kernel_options);
   const bool compile = use == PacketUse::Always      ? packetsWalk(accel)
                        : use == PacketUse::WherePays ? packetsPay(accel, context.device())

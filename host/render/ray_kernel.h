@@ -26,22 +26,27 @@ enum class RayCoherence { Scattered, Coherent };
 // Rays a work-item of a `_packets` kernel walks with (PACKET_RAYS there).
 constexpr std::size_t kPacketRays = 8;
 
-// Packets pay while the scene's bounded primitives are at most this many per
-// ray of the view (a frame's samples, a query's rays): with denser geometry,
-// neighbouring rays part in different leaves. Measured with `prism-bench
-// accel --structures bvh,bvh-1ray,octree,octree-1ray` (docs/accel.md,
-// "Coherent rays in packets"), packets against one ray a work-item:
+// What a RayKernel answers: closest hits (extend.cl) or the light feelers
+// carry (occlude.cl).
+enum class RayQuery { ClosestHits, Transmittance };
+
+// Packets pay while the scene's bounded primitives are at most
+// packetPrimsPerRay(kind, query) per ray of the view (a frame's samples, a
+// query's camera rays): with denser geometry, neighbouring rays part in
+// different leaves. Measured with `prism-bench accel --structures
+// bvh,bvh-1ray,octree,octree-1ray` (docs/accel.md, "Coherent rays in
+// packets"), packets against one ray a work-item:
 // - the BVH: camera rays 1.4x faster at 0.066 and 0.265 primitives a ray,
-//   1.14x at 1.06 and 0.8x at 4.2; shadow rays 1.28x at 0.066, level at
-//   0.265, 0.64x at 1.06;
+//   1.14-1.21x at 1.06, level at 2.1 and 0.8x at 4.2; shadow rays 1.28x at
+//   0.066, level at 0.265, 0.64-0.81x at 1.06;
 // - the octree, whose packets test one box a cell where one ray sorts the
-//   octants it passes: camera rays 1.7x at 0.265, 1.35-1.41x at 1.06, 1.18x
+//   octants it passes: camera rays 1.7x at 0.265, 1.35-1.48x at 1.06, 1.18x
 //   at 2.1 and 0.94x at 4.2; shadow rays 0.92-1.54x at 0.066 (five runs),
-//   1.17x at 0.265, 1.04-1.09x at 1.06, 0.89x at 2.1.
-constexpr double kBvhPacketPrimsPerRay = 0.25;
-// The octree's shadow rays break even between 1.06 and 2.1 (about 1.35 by
-// linear interpolation), its camera rays at about 3.6.
-constexpr double kOctreePacketPrimsPerRay = 1.25;
+//   1.17x at 0.265, 0.99-1.15x at 1.06, 0.89x at 2.1.
+// Each limit lies below where its rays break even: the BVH's camera rays at
+// about 2.1, its feelers at about 0.27; the octree's camera rays at about
+// 3.6, its feelers at about 1.35 (linear interpolation between the figures).
+double packetPrimsPerRay(AccelKind kind, RayQuery query);
 
 // Whether coherent rays through `accel` on `device` go in packets: through the
 // octree, or the BVH (without linear motion bounds, whose boxes the packet walk
@@ -58,12 +63,11 @@ enum class PacketUse { WherePays, Always, Never };
 class RayKernel {
  public:
   RayKernel() = default;
-  // Kernel `name` of program `entry_file`, and `name`_packets where `use` allows.
-  RayKernel(Context& context, const DeviceAccel& accel, const char* entry_file, const char* name,
-            PacketUse use = PacketUse::WherePays);
+  // The single-ray kernel of `query`, and its `_packets` twin where `use` allows.
+  RayKernel(Context& context, const DeviceAccel& accel, RayQuery query, PacketUse use = PacketUse::WherePays);
 
   // Whether rays of this coherence go in packets, `view_rays` rays sharing the
-  // view (k*PacketPrimsPerRay; PacketUse::Always: whatever their number).
+  // view (packetPrimsPerRay; PacketUse::Always: whatever their number).
   bool packets(RayCoherence coherence, std::uint64_t view_rays) const;
   // A launch: add the kernel's arguments, then run(workItems(rays, packets)).
   KernelLaunch launch(bool packets) const;
@@ -74,7 +78,7 @@ class RayKernel {
   Context* m_context = nullptr;
   cl_kernel m_single = nullptr, m_packets = nullptr;
   std::size_t m_primitives = 0;  // bounded ones, in the structure
-  double m_prims_per_ray = 0;    // where packets stop paying (k*PacketPrimsPerRay)
+  double m_prims_per_ray = 0;    // where packets stop paying (packetPrimsPerRay)
   PacketUse m_use = PacketUse::WherePays;
 };
 

@@ -62,8 +62,8 @@ RayQueryEngine::RayQueryEngine(Context& context, SceneGeometry geometry, AccelKi
   }
   m_buffers.upload(context, *m_accel);
   auto start = Clock::now();
-  m_extend = RayKernel(context, *m_accel, "extend.cl", "extend", packets);
-  m_occlude = RayKernel(context, *m_accel, "occlude.cl", "occlude", packets);
+  m_extend = RayKernel(context, *m_accel, RayQuery::ClosestHits, packets);
+  m_occlude = RayKernel(context, *m_accel, RayQuery::Transmittance, packets);
   // PoCL finishes compiling a kernel at its first launch with a new work-group
   // size (PERF-NOTES); one tiny launch of each keeps that out of the timings.
   // The packet kernels are launched directly: one ray is too few for the
