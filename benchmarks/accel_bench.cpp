@@ -124,6 +124,7 @@ long structureColour(const std::string& s) {
   if (s == "bvh-kobj") return 0xE69F00;
   if (s == "bvh-1ray") return 0x999999;
   if (s == "octree-1ray") return 0xF0A070;
+  if (s == "bsp-1ray") return 0x80CFB0;
   return 0x000000;
 }
 

@@ -22,7 +22,7 @@ struct AccelBenchOptions {
   std::vector<AccelKind> structures = {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp};
   bool bvh_kdop = false;          // a BVH with "set of normals" bounds too (--structures bvh-kdop)
   bool bvh_kdop_objects = false;  // ... on the objects alone, not the nodes (--structures bvh-kobj)
-  // structures walked one ray a work-item on every column (--structures bvh-1ray,octree-1ray)
+  // structures walked one ray a work-item on every column (--structures bvh-1ray,octree-1ray,bsp-1ray)
   std::vector<AccelKind> one_ray;
   int camera = 1024;                  // primary rays: camera x camera
   std::size_t random_rays = std::size_t(1) << 20;

@@ -46,9 +46,10 @@ const char* kUsage =
     "  --device D          OpenCL device: index, cpu, gpu or a name substring\n"
     "  --sizes N,...       generated tori of about N triangles each (k and M suffixes allowed)\n"
     "  --structures LIST   comma-separated among bvh, octree, bsp, none (default\n"
-    "                      bvh,octree,bsp); bvh-1ray and octree-1ray (the structure walked\n"
-    "                      one ray a work-item on every column, as on a GPU; bvh and octree\n"
-    "                      take the camera and shadow rays eight at a time on a CPU);\n"
+    "                      bvh,octree,bsp); bvh-1ray, octree-1ray and bsp-1ray (the structure\n"
+    "                      walked one ray a work-item on every column, as on a GPU; bvh,\n"
+    "                      octree and bsp take the camera and shadow rays eight at a time on\n"
+    "                      a CPU where that pays);\n"
     "                      bvh-kdop (the BVH with \"set of normals\" bounds on its nodes and\n"
     "                      its objects), bvh-kobj (on its objects only)\n"
     "  --out DIR           where accel.csv, accel.json and the PNG plots go (default bench-out)\n"
@@ -163,9 +164,11 @@ int main(int argc, char** argv) {
           options.one_ray.push_back(prism::AccelKind::Bvh);
         else if (s == "octree-1ray")
           options.one_ray.push_back(prism::AccelKind::Octree);
+        else if (s == "bsp-1ray")
+          options.one_ray.push_back(prism::AccelKind::Bsp);
         else if (!prism::tryParseAccelKind(s, &kind))
           usageError("--structures: unknown structure '" + s +
-                     "' (expected bvh, bvh-1ray, bvh-kdop, bvh-kobj, octree, octree-1ray, bsp or none)");
+                     "' (expected bvh, bvh-1ray, bvh-kdop, bvh-kobj, octree, octree-1ray, bsp, bsp-1ray or none)");
         else
           options.structures.push_back(kind);
       }

@@ -7,12 +7,12 @@ namespace prism {
 namespace {
 
 // The structures with a packet walk (kernels/accel/packet_queries.h): the
-// octree, and the BVH without linear motion bounds (its packet walk reads a
-// node's boxes at one instant) or k-DOP node bounds (whose slabs it does not
-// test).
+// octree, the BSP, and the BVH without linear motion bounds (its packet walk
+// reads a node's boxes at one instant) or k-DOP node bounds (whose slabs it
+// does not test).
 bool packetsWalk(const DeviceAccel& accel) {
   const std::string& o = accel.kernel_options;
-  if (accel.kind == AccelKind::Octree) return true;
+  if (accel.kind == AccelKind::Octree || accel.kind == AccelKind::Bsp) return true;
   return accel.kind == AccelKind::Bvh && o.find("-DPRISM_BVH_MOTION") == std::string::npos &&
          o.find("-DPRISM_BVH_KDOP") == std::string::npos;
 }
@@ -21,8 +21,11 @@ bool packetsWalk(const DeviceAccel& accel) {
 
 double packetPrimsPerRay(AccelKind kind, RayQuery query) {
   const bool closest = query == RayQuery::ClosestHits;
-  if (kind == AccelKind::Octree) return closest ? 2.0 : 1.25;
-  return closest ? 1.5 : 0.25;
+  switch (kind) {
+    case AccelKind::Octree: return closest ? 2.0 : 1.25;
+    case AccelKind::Bsp: return closest ? 0.35 : 0.1;
+    default: return closest ? 1.5 : 0.25;
+  }
 }
 
 bool packetsPay(const DeviceAccel& accel, const DeviceDescription& device) {

@@ -1,7 +1,7 @@
 // A ray query's kernels for one acceleration structure, and which of them a
 // queue of rays goes to. `extend` and `occlude` give each ray a work-item of
-// its own; their `_packets` twins (kernels/accel/packet_queries.h) walk the BVH
-// or the octree with eight neighbouring rays at once. That pays for rays that travel alike,
+// its own; their `_packets` twins (kernels/accel/packet_queries.h) walk the BVH,
+// the octree or the BSP with eight neighbouring rays at once. That pays for rays that travel alike,
 // such as camera rays in sample order or the shadow rays of one shaded point,
 // and costs for rays that do not (random rays run at about half the speed).
 // On a GPU each work-item's eight lanes run one after another, so there the
@@ -42,22 +42,26 @@ enum class RayQuery { ClosestHits, Transmittance };
 // - the octree, whose packets test one box a cell where one ray sorts the
 //   octants it passes: camera rays 1.7x at 0.265, 1.35-1.48x at 1.06, 1.18x
 //   at 2.1 and 0.94x at 4.2; shadow rays 0.92-1.54x at 0.066 (five runs),
-//   1.17x at 0.265, 0.99-1.15x at 1.06, 0.89x at 2.1.
+//   1.17x at 0.265, 0.99-1.15x at 1.06, 0.89x at 2.1;
+// - the BSP, whose packet descends as one with an interval a lane: camera rays
+//   1.38-1.44x at 0.066, 1.50x at 0.265, 0.86x at 0.53, 0.96-0.98x at 1.06
+//   and 2.1; shadow rays 1.03x at 0.066, 0.88x at 0.265, 0.74-0.83x beyond.
 // Each limit lies below where its rays break even: the BVH's camera rays at
 // about 2.1, its feelers at about 0.27; the octree's camera rays at about
-// 3.6, its feelers at about 1.35 (linear interpolation between the figures).
+// 3.6, its feelers at about 1.35; the BSP's camera rays at about 0.42, its
+// feelers at about 0.1 (linear interpolation between the figures).
 double packetPrimsPerRay(AccelKind kind, RayQuery query);
 
 // Whether coherent rays through `accel` on `device` go in packets: through the
-// octree, or the BVH (without linear motion bounds, whose boxes the packet walk
-// reads at one instant, or k-DOP node bounds, whose slabs it does not test), on
-// a CPU device.
+// octree, the BSP or the BVH (without linear motion bounds, whose boxes the
+// packet walk reads at one instant, or k-DOP node bounds, whose slabs it does
+// not test), on a CPU device.
 bool packetsPay(const DeviceAccel& accel, const DeviceDescription& device);
 
 // Where coherent rays go in packets: where they pay, on any device the
 // structure allows (the tests check the packet walks on whatever device they
-// run on), or nowhere (prism-bench's bvh-1ray and octree-1ray, the walks a GPU
-// takes).
+// run on), or nowhere (prism-bench's bvh-1ray, octree-1ray and bsp-1ray, the
+// walks a GPU takes).
 enum class PacketUse { WherePays, Always, Never };
 
 class RayKernel {

@@ -23,6 +23,9 @@
 #elif defined(PRISM_ACCEL_OCTREE)
 #define PRISM_OCTREE_PACKETS
 #define PACKET_RAYS 8
+#elif defined(PRISM_ACCEL_BSP)
+#define PRISM_BSP_PACKETS
+#define PACKET_RAYS 8
 #endif
 
 /* Each included outside any #if: the host's include resolver inlines a file
@@ -30,6 +33,7 @@
 #include "accel/rays8.h"
 #include "accel/bvh_packets.h"
 #include "accel/octree_packets.h"
+#include "accel/bsp_packets.h"
 
 #ifdef PACKET_RAYS
 

@@ -258,11 +258,8 @@ void checkScene(const AccelScene& scene, std::size_t random_count, int camera_si
     checkHits(scene, "against bvh", rays, bvh_hits, hits);
     checkOcclusion("against bvh", bvh_occluded, occluded);
     checkCarried("against bvh", bvh_carried, carried);
-    CHECK(engine.tracesPackets() == (kind == AccelKind::Octree));
-    if (engine.tracesPackets()) {
-      checkPackets(engine, rays, hits);
-      checkShadowPackets(engine, shadow_rays, occluded, carried);
-    }
+    checkPackets(engine, rays, hits);
+    checkShadowPackets(engine, shadow_rays, occluded, carried);
   }
   {
     // The same tree with "set of normals" bounds: only the node tests differ.
@@ -465,10 +462,9 @@ TEST_CASE("closest hits at exact ties and a few ulps apart: every structure answ
     INFO(accelName(kind) << ": " << differ << " of " << ref.size() << " rays differ; " << on_plane
                          << " reference hits on the plane");
     CHECK(differ == 0);
-    if (kind != AccelKind::Bsp) {  // the packet walks, where ties between packet mates' triangles abound
-      REQUIRE(engine.tracesPackets());
-      checkIdentical("packets against none", ref, engine.intersect(tiny.rays, nullptr, RayCoherence::Coherent));
-    }
+    // The packet walks, where ties between packet mates' triangles abound.
+    REQUIRE(engine.tracesPackets());
+    checkIdentical("packets against none", ref, engine.intersect(tiny.rays, nullptr, RayCoherence::Coherent));
   }
 }
 
@@ -665,8 +661,8 @@ TEST_CASE("rays with NaN or infinite parts, or no direction, are misses in every
   }
 }
 
-TEST_CASE("coherent rays go in packets through the BVH and the octree on a CPU only, never with the BVH's linear "
-          "motion or k-DOP bounds",
+TEST_CASE("coherent rays go in packets through the trees on a CPU only, never with the BVH's linear motion or "
+          "k-DOP bounds",
           "[accel]") {
   // The BVH's packet walk reads a node's boxes at shutter open
   // (accel/bvh_packets.h); a packet's eight lanes run one after another on a
@@ -678,7 +674,7 @@ TEST_CASE("coherent rays go in packets through the BVH and the octree on a CPU o
   for (AccelKind kind : allAccelKinds()) {
     const std::unique_ptr<DeviceAccel> accel = buildAccel(kind, scene.objects);
     INFO(accelName(kind));
-    CHECK(packetsPay(*accel, cpu) == (kind == AccelKind::Bvh || kind == AccelKind::Octree));
+    CHECK(packetsPay(*accel, cpu) == (kind != AccelKind::None));
     CHECK_FALSE(packetsPay(*accel, gpu));
   }
   DeviceAccel moving = *buildAccel(AccelKind::Bvh, scene.objects);
@@ -713,7 +709,7 @@ TEST_CASE("shadow rays in packets through a semitransparent plane and triangles 
       q.dz = 3 - q.oz;
       rays.push_back(toRayGpu({q})[0]);
     }
-  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
     RayQueryEngine engine(sharedContext(), scene.objects, kind, scene.materials, {}, PacketUse::Always);
     const std::vector<float> carried = engine.transmittance(rays);
     std::size_t dark = 0, clear = 0, plane_only = 0, more = 0, part = 0;
@@ -746,7 +742,7 @@ TEST_CASE("the packet walks answer as one ray at a time on any device", "[accel]
   const std::vector<QueryRay> random = randomRays(box, 60, 3), aimed = vertexRays(scene.objects, 13, 4);
   rays.insert(rays.end(), random.begin(), random.end());
   rays.insert(rays.end(), aimed.begin(), aimed.end());
-  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree}) {
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
     RayQueryEngine engine(sharedContext(), scene.objects, kind, scene.materials, {}, PacketUse::Always);
     const std::vector<HitGpu> hits = engine.intersect(rays);
     checkPackets(engine, rays, hits);
