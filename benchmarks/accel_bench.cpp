@@ -235,8 +235,8 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       PacketUse packets;
     };
     std::vector<Variant> variants;
-    for (AccelKind kind : options.structures)
-      variants.push_back({kind, accelName(kind), false, false, PacketUse::WherePays});
+    const PacketUse packets = options.packets_always ? PacketUse::Always : PacketUse::WherePays;
+    for (AccelKind kind : options.structures) variants.push_back({kind, accelName(kind), false, false, packets});
     for (AccelKind kind : options.one_ray)
       variants.push_back({kind, std::string(accelName(kind)) + "-1ray", false, false, PacketUse::Never});
     if (options.bvh_kdop) variants.push_back({AccelKind::Bvh, "bvh-kdop", true, true, PacketUse::WherePays});

@@ -24,6 +24,7 @@ struct AccelBenchOptions {
   bool bvh_kdop_objects = false;  // ... on the objects alone, not the nodes (--structures bvh-kobj)
   // structures walked one ray a work-item on every column (--structures bvh-1ray,octree-1ray,bsp-1ray)
   std::vector<AccelKind> one_ray;
+  bool packets_always = false;  // --packets always: the density limits lifted (PacketUse::Always)
   int camera = 1024;                  // primary rays: camera x camera
   std::size_t random_rays = std::size_t(1) << 20;
   int repeats = 3;                    // timings are the median of this many runs

@@ -61,7 +61,10 @@ const char* kUsage =
     "                      source tree, then tests/data/meshes. The 1.1M-triangle bunny,\n"
     "                      if none has it, is made from the 69k one by Loop subdivision\n"
     "                      and cached in the build tree; missing meshes are skipped\n"
-    "  --no-embree         leave out the Embree reference\n";
+    "  --no-embree         leave out the Embree reference\n"
+    "  --packets always    camera and shadow rays in packets wherever a walk allows, the\n"
+    "                      density limits lifted (to measure where packets pay; default:\n"
+    "                      where they pay, as a render takes them)\n";
 
 [[noreturn]] void usageError(const std::string& message) {
   std::cerr << "prism-bench: " << message << "\n\n" << kUsage;
@@ -182,6 +185,11 @@ int main(int argc, char** argv) {
       options.repeats = static_cast<int>(parseCount("--repeat", value()));
     } else if (a == "--data") {
       options.data_dir = value();
+    } else if (a == "--packets") {
+      const std::string use = value();
+      if (use != "always" && use != "where-pays")
+        usageError("--packets: expected always or where-pays, not '" + use + "'");
+      options.packets_always = use == "always";
     } else if (a == "--no-embree") {
       options.embree = false;
     } else if (!a.empty() && a[0] == '-') {

@@ -23,7 +23,7 @@ double packetPrimsPerRay(AccelKind kind, RayQuery query) {
   const bool closest = query == RayQuery::ClosestHits;
   switch (kind) {
     case AccelKind::Octree: return closest ? 2.0 : 1.25;
-    case AccelKind::Bsp: return closest ? 0.35 : 0.1;
+    case AccelKind::Bsp: return closest ? 0.35 : 0.0;
     default: return closest ? 1.5 : 0.25;
   }
 }

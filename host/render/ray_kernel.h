@@ -33,9 +33,10 @@ enum class RayQuery { ClosestHits, Transmittance };
 // Packets pay while the scene's bounded primitives are at most
 // packetPrimsPerRay(kind, query) per ray of the view (a frame's samples, a
 // query's camera rays): with denser geometry, neighbouring rays part in
-// different leaves. Measured with `prism-bench accel --structures
-// bvh,bvh-1ray,octree,octree-1ray` (docs/accel.md, "Coherent rays in
-// packets"), packets against one ray a work-item:
+// different leaves. Measured with `prism-bench accel --packets always
+// --structures bvh,bvh-1ray,octree,octree-1ray,bsp,bsp-1ray --camera N`
+// (docs/accel.md, "Coherent rays in packets"), packets against one ray a
+// work-item:
 // - the BVH: camera rays 1.4x faster at 0.066 and 0.265 primitives a ray,
 //   1.14-1.21x at 1.06, level at 2.1 and 0.8x at 4.2; shadow rays 1.28x at
 //   0.066, level at 0.265, 0.64-0.81x at 1.06;
@@ -44,12 +45,17 @@ enum class RayQuery { ClosestHits, Transmittance };
 //   at 2.1 and 0.94x at 4.2; shadow rays 0.92-1.54x at 0.066 (five runs),
 //   1.17x at 0.265, 0.99-1.15x at 1.06, 0.89x at 2.1;
 // - the BSP, whose packet descends as one with an interval a lane: camera rays
-//   1.38-1.44x at 0.066, 1.50x at 0.265, 0.86x at 0.53, 0.96-0.98x at 1.06
-//   and 2.1; shadow rays 1.03x at 0.066, 0.88x at 0.265, 0.74-0.83x beyond.
-// Each limit lies below where its rays break even: the BVH's camera rays at
-// about 2.1, its feelers at about 0.27; the octree's camera rays at about
-// 3.6, its feelers at about 1.35; the BSP's camera rays at about 0.42, its
-// feelers at about 0.1 (linear interpolation between the figures).
+//   1.27-1.44x at 0.066, 1.50x at 0.265, 0.86x at 0.53, 0.96-0.98x at 1.06
+//   and 2.1; shadow rays toward a point light 1.03-1.20x at 0.066, 0.88x at
+//   0.265, 0.74-0.83x beyond.
+// Each limit lies at or below where its rays break even by linear
+// interpolation between the medians: the BVH's camera rays at about 2.1, its
+// feelers at about 0.27; the octree's camera rays at about 3.6, its feelers
+// at about 1.35 (one run of four measured 0.99 at 1.06); the BSP's camera
+// rays at about 0.47. The BSP's feelers stay one ray a work-item (limit 0):
+// a point's feelers toward an area light differ in sign, which the BSP's
+// packet answers ray by ray (kernels/accel/bsp_packets.h), and toward a point
+// light they gained 1.03-1.20x at best.
 double packetPrimsPerRay(AccelKind kind, RayQuery query);
 
 // Whether coherent rays through `accel` on `device` go in packets: through the

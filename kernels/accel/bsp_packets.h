@@ -11,10 +11,12 @@
  *
  * Which side is near depends on the direction's sign along the plane's axis;
  * the lanes share it only where their directions share each axis's sign
- * (RayPacket.same_signs: camera rays and a point's feelers nearly always). A
- * packet of mixed signs is walked lane by lane, each ray alone through
- * structure_closest (closest hits) or sent to structure_transmittance at the
- * end (p->alone). */
+ * (RayPacket.same_signs: neighbouring camera rays nearly always, the feelers
+ * of a point under an area light seldom). A packet of mixed signs is walked
+ * lane by lane, each ray alone through structure_closest (closest hits) or
+ * sent to structure_transmittance at the end (p->alone). So the BSP's feelers
+ * stay one ray a work-item in a render (render/ray_kernel.h); its packet
+ * transmittance serves coherent shadow queries. */
 #ifndef PRISM_ACCEL_BSP_PACKETS_H
 #define PRISM_ACCEL_BSP_PACKETS_H
 
@@ -39,26 +41,17 @@ PRISM_HOT void bsp8_one_by_one(ACCEL_PARAMS, const RayLanes* r, RayPacket* p, in
     p->best = (float8)(RAYS8_CLOSED);
     return;
   }
-  float best[8], u[8], v[8];
-  int prim[8];
-  vstore8(p->best, 0, best);
-  vstore8(p->u, 0, u);
-  vstore8(p->v, 0, v);
-  vstore8(p->prim, 0, prim);
+  RayHits8 hits;
+  rays8_hits_out(p, &hits);
   for (int l = 0; l < PACKET_RAYS; ++l) {
     if (!(r->live & (1 << l))) continue;
     HitGpu h;
     /* The whole query again, planes included: the one-ray walk's answer. */
     structure_closest(ACCEL_ARGS, rays8_origin(r, l), rays8_dir(r, l), r->time[l], r->tmin[l], r->tmax[l], &h);
-    best[l] = h.prim >= 0 ? h.t : best[l];
-    prim[l] = h.prim;
-    u[l] = h.u;
-    v[l] = h.v;
+    if (h.prim >= 0) hits.best[l] = h.t;
+    rays8_keep(&hits, l, &h);
   }
-  p->best = vload8(0, best);
-  p->u = vload8(0, u);
-  p->v = vload8(0, v);
-  p->prim = vload8(0, prim);
+  rays8_hits_in(&hits, p);
 }
 
 PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* materials, const RayLanes* r,

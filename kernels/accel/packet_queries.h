@@ -41,41 +41,24 @@
 PRISM_HOT void rays8_closest(ACCEL_PARAMS, __global const RayGpu* rays, int lanes, __global HitGpu* hits) {
   RayLanes r;
   rays8_lanes(rays, lanes, &r);
-  float best[8], u[8], v[8];
-  int prim[8];
+  RayHits8 found;
   for (int l = 0; l < PACKET_RAYS; ++l) {
     HitGpu h;
     accel_miss(&h);
-    best[l] = r.tmax[l];
+    found.best[l] = r.tmax[l];
     if (r.live & (1 << l)) {
       float3 o = rays8_origin(&r, l), d = rays8_dir(&r, l);
-      unbounded_closest(geom, accel_unbounded, accel_unbounded_count, o, d, r.time[l], r.tmin[l], &best[l], &h);
+      unbounded_closest(geom, accel_unbounded, accel_unbounded_count, o, d, r.time[l], r.tmin[l], &found.best[l],
+                        &h);
     }
-    u[l] = h.u;
-    v[l] = h.v;
-    prim[l] = h.prim;
+    rays8_keep(&found, l, &h);
   }
   RayPacket p;
-  rays8_packet(&r, best, &p);
-  p.u = vload8(0, u);
-  p.v = vload8(0, v);
-  p.prim = vload8(0, prim);
+  rays8_packet(&r, found.best, &p);
+  rays8_hits_in(&found, &p);
   if (r.live) structure_packet_walk(ACCEL_ARGS, 0, &r, &p, 0);
-  vstore8(p.best, 0, best);
-  vstore8(p.u, 0, u);
-  vstore8(p.v, 0, v);
-  vstore8(p.prim, 0, prim);
-  for (int l = 0; l < lanes; ++l) {
-    HitGpu h;
-    accel_miss(&h);
-    if (prim[l] >= 0) {
-      h.t = best[l];
-      h.prim = prim[l];
-      h.u = u[l];
-      h.v = v[l];
-    }
-    hits[l] = h;
-  }
+  rays8_hits_out(&p, &found);
+  for (int l = 0; l < lanes; ++l) hits[l] = rays8_hit(&found, l);
 }
 
 /* The light rays[0, lanes) (lanes <= 8) carry, into carried[0, lanes), as

@@ -112,6 +112,47 @@ typedef struct RayPacket {
   int nx, ny, nz;
 } RayPacket;
 
+/* A packet's closest hits lane by lane, for what takes the rays one at a time:
+ * best[l] the far end of lane l's search, prim[l] its hit (-1: none yet). */
+typedef struct RayHits8 {
+  float best[8], u[8], v[8];
+  int prim[8];
+} RayHits8;
+
+PRISM_HOT void rays8_hits_out(const RayPacket* p, RayHits8* h) {
+  vstore8(p->best, 0, h->best);
+  vstore8(p->u, 0, h->u);
+  vstore8(p->v, 0, h->v);
+  vstore8(p->prim, 0, h->prim);
+}
+
+PRISM_HOT void rays8_hits_in(const RayHits8* h, RayPacket* p) {
+  p->best = vload8(0, h->best);
+  p->u = vload8(0, h->u);
+  p->v = vload8(0, h->v);
+  p->prim = vload8(0, h->prim);
+}
+
+/* Lane l's hit as one ray's (a miss where it has none), and back (its prim,
+ * u and v; best is searched in place). */
+PRISM_HOT HitGpu rays8_hit(const RayHits8* h, int l) {
+  HitGpu g;
+  accel_miss(&g);
+  if (h->prim[l] >= 0) {
+    g.t = h->best[l];
+    g.prim = h->prim[l];
+    g.u = h->u[l];
+    g.v = h->v[l];
+  }
+  return g;
+}
+
+PRISM_HOT void rays8_keep(RayHits8* h, int l, const HitGpu* g) {
+  h->prim[l] = g->prim;
+  h->u[l] = g->u;
+  h->v[l] = g->v;
+}
+
 /* The packet of lanes r, its search reaching to best[l] in lane l; no hit yet. */
 PRISM_HOT void rays8_packet(const RayLanes* r, const float* best, RayPacket* p) {
   float ix[8], iy[8], iz[8];
@@ -178,30 +219,17 @@ PRISM_HOT void rays8_leaf_closest(__global const TriPacketGpu* pk, int8 reach, c
   if (rays8_one_by_one(pk)) {
     int in[8];
     vstore8(reach, 0, in);
-    float best[8], u[8], v[8];
-    int prim[8];
-    vstore8(p->best, 0, best);
-    vstore8(p->u, 0, u);
-    vstore8(p->v, 0, v);
-    vstore8(p->prim, 0, prim);
+    RayHits8 hits;
+    rays8_hits_out(p, &hits);
     for (int l = 0; l < PACKET_RAYS; ++l) {
       if (!in[l]) continue;
       float3 o = rays8_origin(r, l), d = rays8_dir(r, l);
       PacketRay pr = packet_ray(o, d, r->time[l]);
-      HitGpu h;
-      h.t = prim[l] >= 0 ? best[l] : PRISM_INF;
-      h.prim = prim[l];
-      h.u = u[l];
-      h.v = v[l];
-      packet_closest(pk, &pr, o, d, r->tmin[l], &best[l], &h, geom);
-      prim[l] = h.prim;
-      u[l] = h.u;
-      v[l] = h.v;
+      HitGpu h = rays8_hit(&hits, l);
+      packet_closest(pk, &pr, o, d, r->tmin[l], &hits.best[l], &h, geom);
+      rays8_keep(&hits, l, &h);
     }
-    p->best = vload8(0, best);
-    p->u = vload8(0, u);
-    p->v = vload8(0, v);
-    p->prim = vload8(0, prim);
+    rays8_hits_in(&hits, p);
     return;
   }
   for (int lane = 0; lane < PACKET_LANES; ++lane) {

@@ -462,9 +462,25 @@ TEST_CASE("closest hits at exact ties and a few ulps apart: every structure answ
     INFO(accelName(kind) << ": " << differ << " of " << ref.size() << " rays differ; " << on_plane
                          << " reference hits on the plane");
     CHECK(differ == 0);
-    // The packet walks, where ties between packet mates' triangles abound.
+    // The packet walks, where ties between packet mates' triangles abound:
+    // the rays as they come (their directions' signs mixed in most packets)
+    // and those whose directions share each axis's sign, which the BSP's
+    // packets walk together rather than one by one.
     REQUIRE(engine.tracesPackets());
     checkIdentical("packets against none", ref, engine.intersect(tiny.rays, nullptr, RayCoherence::Coherent));
+    std::vector<QueryRay> alike;
+    std::vector<HitGpu> alike_ref;
+    for (std::size_t i = 0; i < tiny.rays.size(); ++i) {
+      const QueryRay& q = tiny.rays[i];
+      if (q.dx >= 0 && q.dz >= 0 && (q.dy >= 0) == (tiny.rays[0].dy >= 0)) {
+        alike.push_back(q);
+        alike_ref.push_back(ref[i]);
+      }
+    }
+    INFO(alike.size() << " rays share their directions' signs");
+    CHECK(alike.size() >= 1000);
+    checkIdentical("packets of one sign against none", alike_ref,
+                   engine.intersect(alike, nullptr, RayCoherence::Coherent));
   }
 }
 
