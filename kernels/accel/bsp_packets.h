@@ -61,16 +61,12 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
     return;
   }
   __global const BspNodeGpu* nodes = (__global const BspNodeGpu*)(accel_nodes + 2);
-  /* The scene's box, as accel_clip_scene clips one ray to it. */
+  /* The scene's box, as accel_clip_scene clips one ray to it (its fmin and
+   * fmax give the same ends: no NaN reaches them). */
   float8 t0, t1;
-  {
-    float4 lo = accel_nodes[0], hi = accel_nodes[1];
-    float8 ax = ((float8)(lo.x) - p->ox) * p->ix, bx = ((float8)(hi.x) - p->ox) * p->ix;
-    float8 ay = ((float8)(lo.y) - p->oy) * p->iy, by = ((float8)(hi.y) - p->oy) * p->iy;
-    float8 az = ((float8)(lo.z) - p->oz) * p->iz, bz = ((float8)(hi.z) - p->oz) * p->iz;
-    t0 = fmax(fmax(fmin(ax, bx), fmin(ay, by)), fmax(fmin(az, bz), p->tmin));
-    t1 = fmin(fmin(fmin(fmax(ax, bx), fmax(ay, by)), fmax(az, bz)), p->best) * ACCEL_FAR_SCALE;
-  }
+  rays8_box(accel_nodes[0].xyz, accel_nodes[1].xyz, p, &t0, &t1);
+  t0 = rays8_max(t0, p->tmin);
+  t1 = rays8_min(t1, p->best) * ACCEL_FAR_SCALE;
   /* The near side along each axis, the same for every lane. */
   const int up[3] = {p->ix.s0 >= 0.0f, p->iy.s0 >= 0.0f, p->iz.s0 >= 0.0f};
   int stack_node[PRISM_ACCEL_STACK];

@@ -37,11 +37,9 @@ PRISM_HOT int8 rays8_child(__global const float* nf, int i, int8 reach, const Ra
     near_t = rays8_max(rays8_max(ax, ay), rays8_max(az, p->tmin));
     far_t = rays8_min(rays8_min(rays8_min(bx, by), bz), p->best);
   } else {
-    float8 ax = ((float8)(nf[i]) - p->ox) * p->ix, bx = ((float8)(nf[8 + i]) - p->ox) * p->ix;
-    float8 ay = ((float8)(nf[16 + i]) - p->oy) * p->iy, by = ((float8)(nf[24 + i]) - p->oy) * p->iy;
-    float8 az = ((float8)(nf[32 + i]) - p->oz) * p->iz, bz = ((float8)(nf[40 + i]) - p->oz) * p->iz;
-    near_t = rays8_max(rays8_max(rays8_min(ax, bx), rays8_min(ay, by)), rays8_max(rays8_min(az, bz), p->tmin));
-    far_t = rays8_min(rays8_min(rays8_min(rays8_max(ax, bx), rays8_max(ay, by)), rays8_max(az, bz)), p->best);
+    rays8_box((float3)(nf[i], nf[16 + i], nf[32 + i]), (float3)(nf[8 + i], nf[24 + i], nf[40 + i]), p, &near_t, &far_t);
+    near_t = rays8_max(near_t, p->tmin);
+    far_t = rays8_min(far_t, p->best);
   }
   far_t *= ACCEL_FAR_SCALE;
   int8 meets = (near_t <= far_t) & reach;

@@ -40,11 +40,9 @@
  * whose test is negated as it stands, NaN included); the box's far end
  * widened as octree_far widens it. */
 PRISM_HOT int8 rays8_cell(__global const OctreeNodeGpu* n, const RayPacket* p) {
-  float8 ax = ((float8)(n->lo_x) - p->ox) * p->ix, bx = ((float8)(n->hi_x) - p->ox) * p->ix;
-  float8 ay = ((float8)(n->lo_y) - p->oy) * p->iy, by = ((float8)(n->hi_y) - p->oy) * p->iy;
-  float8 az = ((float8)(n->lo_z) - p->oz) * p->iz, bz = ((float8)(n->hi_z) - p->oz) * p->iz;
-  float8 near_t = rays8_max(rays8_max(rays8_min(ax, bx), rays8_min(ay, by)), rays8_max(rays8_min(az, bz), p->tmin));
-  float8 far_t = rays8_min(rays8_min(rays8_max(ax, bx), rays8_max(ay, by)), rays8_max(az, bz));
+  float8 near_t, far_t;
+  rays8_box((float3)(n->lo_x, n->lo_y, n->lo_z), (float3)(n->hi_x, n->hi_y, n->hi_z), p, &near_t, &far_t);
+  near_t = rays8_max(near_t, p->tmin);
   far_t *= select((float8)(2.0f - ACCEL_FAR_SCALE), (float8)(ACCEL_FAR_SCALE), far_t >= 0.0f);
   return (near_t <= far_t) & !(p->best < near_t - ACCEL_CELL_EPS * fabs(near_t));
 }
