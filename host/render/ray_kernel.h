@@ -1,9 +1,10 @@
 // A ray query's kernels for one acceleration structure, and which of them a
 // queue of rays goes to. `extend` and `occlude` give each ray a work-item of
-// its own; their `_packets` twins (kernels/accel/packet_queries.h) walk the BVH,
-// the octree or the BSP with eight neighbouring rays at once. That pays for rays that travel alike,
-// such as camera rays in sample order or the shadow rays of one shaded point,
-// and costs for rays that do not (random rays run at about half the speed).
+// its own; their `_packets` twins (kernels/accel/packet_queries.h) walk the
+// BVH, the octree or the BSP with eight neighbouring rays at once. That pays
+// for rays that travel alike, such as camera rays in sample order or the
+// shadow rays of one shaded point, and costs for rays that do not (random
+// rays run at about half the speed).
 // On a GPU each work-item's eight lanes run one after another, so there the
 // packets are never used. Both give the same answers to the bit on every ray
 // the tests trace (tests/accel/accel_agreement_test.cpp; docs/accel.md,

@@ -64,7 +64,7 @@ PRISM_HOT void rays8_closest(ACCEL_PARAMS, __global const RayGpu* rays, int lane
 /* The light rays[0, lanes) (lanes <= 8) carry, into carried[0, lanes), as
  * accel_transmittance answers each. */
 PRISM_HOT void rays8_transmittance(ACCEL_PARAMS, __global const MaterialGpu* materials,
-                                        __global const RayGpu* rays, int lanes, float* carried) {
+                                   __global const RayGpu* rays, int lanes, float* carried) {
   RayLanes r;
   rays8_lanes(rays, lanes, &r);
   float extent[8], light[8];
