@@ -61,8 +61,11 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
     return;
   }
   __global const BspNodeGpu* nodes = (__global const BspNodeGpu*)(accel_nodes + 2);
-  /* The scene's box, as accel_clip_scene clips one ray to it (its fmin and
-   * fmax give the same ends: no NaN reaches them). */
+  /* The scene's box, as accel_clip_scene clips one ray to it. Its fmin and
+   * fmax give the same ends as rays8_min and rays8_max: no NaN reaches them
+   * (the box is finite, or inverted where the scene has only unbounded
+   * primitives), and a zero end's sign, which they may leave otherwise, is
+   * only ever compared. */
   float8 t0, t1;
   rays8_box(accel_nodes[0].xyz, accel_nodes[1].xyz, p, &t0, &t1);
   t0 = rays8_max(t0, p->tmin);

@@ -27,8 +27,11 @@
 
 #ifdef PACKET_RAYS
 
-/* min and max without OpenCL's NaN rule: no NaN reaches them (rays are
- * walkable and reciprocals finite). */
+/* min and max without OpenCL's NaN rule: no NaN reaches them (origins are
+ * finite, accel_safe_rcp keeps reciprocals finite and nonzero, and boxes are
+ * finite or inverted: no 0 * inf, no inf - inf). As min_t and max_t, a tie
+ * returns b; where fmin or fmax would have, the sign of a zero end may differ,
+ * which no comparison sees. */
 PRISM_HOT float8 rays8_min(float8 a, float8 b) { return select(b, a, a < b); }
 PRISM_HOT float8 rays8_max(float8 a, float8 b) { return select(b, a, a > b); }
 PRISM_HOT float rays8_least(float8 a) {
