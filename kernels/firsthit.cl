@@ -232,7 +232,7 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
         float4 t = e2_qv * inv_det;
         int4 ok = ((int4)(n) + (int4)(0, 1, 2, 3) < (int4)(end)) & (det != 0.0f) & (u >= 0.0f) & (u <= 1.0f) &
                   (v >= 0.0f) & (u + v <= 1.0f) & (t > 0.0f) & (t < PRISM_INF);
-        if (!any(ok)) continue;
+        if (!any4_t(ok)) continue;
         if (ok.s0) firsthit_keep(entries, n, t.s0, prim, pass);
         if (ok.s1) firsthit_keep(entries, n + 1, t.s1, prim, pass);
         if (ok.s2) firsthit_keep(entries, n + 2, t.s2, prim, pass);

@@ -78,7 +78,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
   int node = 0;
   for (;;) {
     int8 live = bsp8_live(t0, t1, p);
-    if (any(live)) {
+    if (any8_t(live)) {
       t0 = select((float8)(BSP8_EMPTY_T0), t0, live);
       t1 = select((float8)(BSP8_EMPTY_T1), t1, live);
       BspNodeGpu n = nodes[node];
@@ -98,11 +98,11 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
         int8 both = live & !first_only & !second_only;
         float8 mid = fmin(fmax(tp, t0), t1);
         int8 to_first = live & !second_only, to_second = live & !first_only;
-        if (!any(to_first)) { /* every lane on the second side alone, its interval as it was */
+        if (!any8_t(to_first)) { /* every lane on the second side alone, its interval as it was */
           node = second;
           continue;
         }
-        if (any(to_second)) {
+        if (any8_t(to_second)) {
           stack_node[sp] = second;
           stack_t0[sp] = select((float8)(BSP8_EMPTY_T0), select(t0, mid, both), to_second);
           stack_t1[sp] = select((float8)(BSP8_EMPTY_T1), t1, to_second);

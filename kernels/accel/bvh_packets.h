@@ -69,7 +69,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
         int c = child[i];
         if (c == 0) continue;
         float8 entry;
-        if (!any(rays8_child(nf, i, reach, p, &entry))) continue;
+        if (!any8_t(rays8_child(nf, i, reach, p, &entry))) continue;
         float key = rays8_least(entry);
         int j = sp++;
         while (j > base && stack_key[j - 1] < key) {
@@ -97,10 +97,10 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
         else
           rays8_leaf_closest(accel_packets + start + k, reach, r, p, geom);
       }
-      if (!any(p->best != (float8)(RAYS8_CLOSED))) break;
+      if (!any8_t(p->best != (float8)(RAYS8_CLOSED))) break;
     }
     float8 limit = p->best * ACCEL_FAR_SCALE;
-    while (sp > 0 && !any(stack_entry[sp - 1] <= limit)) --sp;
+    while (sp > 0 && !any8_t(stack_entry[sp - 1] <= limit)) --sp;
     if (sp == 0) break;
     --sp;
     code = stack_code[sp];

@@ -175,12 +175,12 @@ PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* 
     PacketRay moved = moving_packet_ray(pk, r, o, d, geom);
     ok = packet_intersect(pk, &moved, tmin, *best, 1, &t, &u, &v);
     prim = select(prim, prim & (int4)(~PACKET_MOVING), prim >= 0); /* ids of the filled lanes */
-  } else if (any(prim >= 0)) {
+  } else if (any4_t(prim >= 0)) {
     ok = packet_intersect(pk, r, tmin, *best, 1, &t, &u, &v);
   } else { /* spheres, boxes or transformed objects only: no triangle to test */
     ok = (int4)(0);
   }
-  if (any(ok)) {
+  if (any4_t(ok)) {
     float ta[4], ua[4], va[4];
     int oka[4], pa[4];
     vstore4(t, 0, ta);
@@ -191,7 +191,7 @@ PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* 
     for (int k = 0; k < 4; ++k)
       if (oka[k]) accel_accept(ta[k], ua[k], va[k], pa[k], best, hit);
   }
-  if (any(prim < -1)) {
+  if (any4_t(prim < -1)) {
     for (int k = 0; k < 4; ++k) {
       int id = -pk->prim[k] - 2;
       if (id < 0) continue;
@@ -264,12 +264,12 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
     PacketRay moved = moving_packet_ray(pk, r, o, d, geom);
     ok = packet_intersect(pk, &moved, tmin, tmax, 0, &t, &u, &v);
     prim = select(prim, prim & (int4)(~PACKET_MOVING), prim >= 0); /* ids of the filled lanes */
-  } else if (any(prim >= 0)) {
+  } else if (any4_t(prim >= 0)) {
     ok = packet_intersect(pk, r, tmin, tmax, 0, &t, &u, &v);
   } else { /* spheres, boxes or transformed objects only: no triangle to test */
     ok = (int4)(0);
   }
-  if (any(ok)) {
+  if (any4_t(ok)) {
     int oka[4], pa[4];
     vstore4(ok, 0, oka);
     vstore4(prim, 0, pa);
@@ -279,7 +279,7 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
       if (carried == 0.0f) return 0.0f;
     }
   }
-  if (any(prim < -1)) {
+  if (any4_t(prim < -1)) {
     for (int k = 0; k < 4; ++k) {
       int id = -pk->prim[k] - 2;
       if (id < 0) continue;

@@ -57,7 +57,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
   while (sp > 0) {
     __global const OctreeNodeGpu* n = nodes + stack[--sp];
     int8 reach = rays8_cell(n, p);
-    if (!any(reach)) continue;
+    if (!any8_t(reach)) continue;
     int mask = n->child_mask;
     if (mask) {
       /* Farthest first, so that octant `away` is popped first. */
@@ -74,7 +74,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
       else
         rays8_leaf_closest(accel_packets + n->first + k, reach, r, p, geom);
     }
-    if (transmittance && !any(p->best != (float8)(RAYS8_CLOSED))) break;
+    if (transmittance && !any8_t(p->best != (float8)(RAYS8_CLOSED))) break;
   }
 }
 

@@ -223,7 +223,7 @@ PRISM_HOT int8 rays8_triangle(__global const TriPacketGpu* pk, int k, const RayP
 /* Whether leaf packet pk is tested ray by ray: it holds other kinds of
  * objects, or moving triangles (in object space). */
 PRISM_HOT bool rays8_one_by_one(__global const TriPacketGpu* pk) {
-  return any(vload4(0, pk->prim) < -1) || packet_moves(pk);
+  return any4_t(vload4(0, pk->prim) < -1) || packet_moves(pk);
 }
 
 /* Closest hits, leaf packet pk, in the lanes of `reach` (those whose own box
@@ -300,7 +300,7 @@ PRISM_HOT void rays8_leaf_transmittance(__global const TriPacketGpu* pk, int8 re
     if (id < 0) continue;
     float8 t, u, v;
     int8 met = rays8_triangle(pk, lane, p, 0, &t, &u, &v) & reach;
-    if (any(met)) rays8_meet(met, accel_transmit(materials, geom, id), p);
+    if (any8_t(met)) rays8_meet(met, accel_transmit(materials, geom, id), p);
   }
 }
 

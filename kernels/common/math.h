@@ -31,6 +31,16 @@ inline float max_t(float a, float b) { return a > b ? a : b; }
 inline float3 min3_t(float3 a, float3 b) { return select(b, a, a < b); }
 inline float3 max3_t(float3 a, float3 b) { return select(b, a, a > b); }
 
+/* any() of a mask, without branches: PoCL lowers any() to a chain of tests
+ * and jumps, a pair of lanes at a time, whose branches mispredict where the
+ * lanes that are set vary from call to call (a packet's rays, a leaf's four
+ * triangles). The lanes ORed together keep the sign bit of any set one. */
+inline bool any4_t(int4 m) {
+  int2 h = m.lo | m.hi;
+  return (h.x | h.y) < 0;
+}
+inline bool any8_t(int8 m) { return any4_t(m.lo | m.hi); }
+
 inline float3 load3(const float* p) { return (float3)(p[0], p[1], p[2]); }
 inline float3 load3g(__global const float* p) { return (float3)(p[0], p[1], p[2]); }
 inline float max3(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
