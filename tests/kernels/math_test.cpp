@@ -1,7 +1,8 @@
 // pow_positive (kernels/common/math.h) on the device against double-precision
 // pow of the same float inputs: within the error bound its comment derives from
 // OpenCL's accuracy of log2 and exp2, exact where the result is 1, and 0 (not
-// NaN) where the result is below every float.
+// NaN) where the result is below every float. any4_t and any8_t against
+// OpenCL's any() on every pattern of set lanes.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -77,4 +78,55 @@ TEST_CASE("pow_positive gives exactly 1 at exponent 0 and at base 1, and 0 when 
   for (int k = 0; k < 6; ++k) CHECK(got[k] == 1.0f);
   CHECK(got[6] == 0.0f);  // 0.999^1e6 = e^-1000
   CHECK(got[7] == 0.0f);
+}
+
+namespace {
+
+// any4_t and any8_t against OpenCL's any() on the same lanes: any() looks at
+// each lane's sign bit alone, whatever the other bits.
+const char* kAnyProbe = R"(
+#include "common/math.h"
+__kernel void any_probe(__global const int* lanes, __global int* out, int count) {
+  int k = get_global_id(0);
+  if (k >= count) return;
+  int8 m = vload8(k, lanes);
+  out[4 * k] = any8_t(m);
+  out[4 * k + 1] = any(m);
+  out[4 * k + 2] = any4_t(m.lo);
+  out[4 * k + 3] = any(m.lo);
+}
+)";
+
+}  // namespace
+
+TEST_CASE("any4_t and any8_t agree with any() on every pattern of set lanes", "[kernels][math]") {
+  // Every pattern of eight set (negative) and clear (non-negative) lanes, each
+  // lane's value drawn from both kinds' extremes and ordinary values.
+  const std::int32_t set[] = {-1, std::numeric_limits<std::int32_t>::min(), -5, -123456};
+  const std::int32_t clear[] = {0, 1, std::numeric_limits<std::int32_t>::max(), 77};
+  std::mt19937 gen(3);
+  std::vector<std::int32_t> lanes;
+  std::vector<int> expected;
+  for (int round = 0; round < 8; ++round)
+    for (int pattern = 0; pattern < 256; ++pattern) {
+      for (int l = 0; l < 8; ++l)
+        lanes.push_back(((pattern >> l) & 1) ? set[gen() % 4] : clear[gen() % 4]);
+      expected.push_back(pattern != 0);
+    }
+  const size_t count = expected.size();
+  Context& ctx = test::sharedContext();
+  cl_kernel kernel = ctx.kernelFromText(kAnyProbe, "any_probe.cl", "any_probe", "");
+  Buffer in(ctx, lanes.size() * sizeof(std::int32_t)), out(ctx, 4 * count * sizeof(std::int32_t));
+  in.writeVector(lanes);
+  ctx.launch(kernel).arg(in).arg(out).arg(static_cast<cl_int>(count)).run(count);
+  std::vector<std::int32_t> got = out.readVector<std::int32_t>(4 * count);
+  size_t wrong8 = 0, wrong4 = 0, wrong_any = 0;
+  for (size_t k = 0; k < count; ++k) {
+    wrong_any += (got[4 * k + 1] != 0) != (expected[k] != 0);
+    wrong8 += (got[4 * k] != 0) != (got[4 * k + 1] != 0);
+    wrong4 += (got[4 * k + 2] != 0) != (got[4 * k + 3] != 0);
+  }
+  CHECK(wrong_any == 0);  // the reference itself
+  CHECK(wrong8 == 0);
+  CHECK(wrong4 == 0);
 }
