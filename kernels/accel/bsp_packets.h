@@ -37,7 +37,7 @@ PRISM_HOT int8 bsp8_live(float8 t0, float8 t1, const RayPacket* p) {
 /* Each lane alone, for a packet whose directions differ in sign. */
 PRISM_HOT void bsp8_one_by_one(ACCEL_PARAMS, const RayLanes* r, RayPacket* p, int transmittance) {
   if (transmittance) {
-    p->alone |= p->best != (float8)(RAYS8_CLOSED);
+    p->alone |= rays8_open(p);
     p->best = (float8)(RAYS8_CLOSED);
     return;
   }
@@ -68,7 +68,6 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
    * only ever compared. */
   float8 t0, t1;
   rays8_box(accel_nodes[0].xyz, accel_nodes[1].xyz, p, &t0, &t1);
-  t0 = rays8_max(t0, p->tmin);
   t1 = rays8_min(t1, p->best) * ACCEL_FAR_SCALE;
   /* The near side along each axis, the same for every lane. */
   const int up[3] = {p->ix.s0 >= 0.0f, p->iy.s0 >= 0.0f, p->iz.s0 >= 0.0f};

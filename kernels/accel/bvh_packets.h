@@ -38,7 +38,6 @@ PRISM_HOT int8 rays8_child(__global const float* nf, int i, int8 reach, const Ra
     far_t = rays8_min(rays8_min(rays8_min(bx, by), bz), p->best);
   } else {
     rays8_box((float3)(nf[i], nf[16 + i], nf[32 + i]), (float3)(nf[8 + i], nf[24 + i], nf[40 + i]), p, &near_t, &far_t);
-    near_t = rays8_max(near_t, p->tmin);
     far_t = rays8_min(far_t, p->best);
   }
   far_t *= ACCEL_FAR_SCALE;
@@ -59,7 +58,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
   float stack_key[PRISM_ACCEL_STACK]; /* the least entry distance */
   int sp = 0;
   int code = 0; /* the root */
-  int8 reach = p->best != (float8)(RAYS8_CLOSED); /* the lanes whose own tests admit `code` */
+  int8 reach = rays8_open(p); /* the lanes whose own tests admit `code` */
   for (;;) {
     if (code >= 0) {
       __global const float* nf = (__global const float*)(nodes + BVH_NODE_WORDS * code);
@@ -97,7 +96,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
         else
           rays8_leaf_closest(accel_packets + start + k, reach, r, p, geom);
       }
-      if (!any8_t(p->best != (float8)(RAYS8_CLOSED))) break;
+      if (!any8_t(rays8_open(p))) break;
     }
     float8 limit = p->best * ACCEL_FAR_SCALE;
     while (sp > 0 && !any8_t(stack_entry[sp - 1] <= limit)) --sp;

@@ -42,7 +42,6 @@
 PRISM_HOT int8 rays8_cell(__global const OctreeNodeGpu* n, const RayPacket* p) {
   float8 near_t, far_t;
   rays8_box((float3)(n->lo_x, n->lo_y, n->lo_z), (float3)(n->hi_x, n->hi_y, n->hi_z), p, &near_t, &far_t);
-  near_t = rays8_max(near_t, p->tmin);
   far_t *= select((float8)(2.0f - ACCEL_FAR_SCALE), (float8)(ACCEL_FAR_SCALE), far_t >= 0.0f);
   return (near_t <= far_t) & !(p->best < near_t - ACCEL_CELL_EPS * fabs(near_t));
 }
@@ -74,7 +73,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
       else
         rays8_leaf_closest(accel_packets + n->first + k, reach, r, p, geom);
     }
-    if (transmittance && !any8_t(p->best != (float8)(RAYS8_CLOSED))) break;
+    if (transmittance && !any8_t(rays8_open(p))) break;
   }
 }
 

@@ -86,7 +86,7 @@ PRISM_HOT void rays8_transmittance(ACCEL_PARAMS, __global const MaterialGpu* mat
   rays8_packet(&r, extent, &p);
   p.light = vload8(0, light);
   p.alone = vload8(0, alone);
-  if (any8_t(p.best != (float8)(RAYS8_CLOSED))) structure_packet_walk(ACCEL_ARGS, materials, &r, &p, 1);
+  if (any8_t(rays8_open(&p))) structure_packet_walk(ACCEL_ARGS, materials, &r, &p, 1);
   vstore8(p.light, 0, light);
   vstore8(p.alone, 0, alone);
   for (int l = 0; l < lanes; ++l) {

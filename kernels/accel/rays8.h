@@ -115,18 +115,21 @@ typedef struct RayPacket {
   int nx, ny, nz;
 } RayPacket;
 
-/* Where the eight rays enter and leave the box lo..hi (its slabs, nearer
- * planes against farther ones, not yet cut to the rays' intervals): the test
- * the octree's cells, the BSP's scene box and the BVH's children in packets of
- * mixed direction signs share; each caller cuts and widens the ends as its
+/* Where the eight rays enter the box lo..hi (no earlier than their tmin) and
+ * leave it (its far planes, not yet cut to the rays' far ends): the test the
+ * octree's cells, the BSP's scene box and the BVH's children in packets of
+ * mixed direction signs share; each caller cuts and widens the far end as its
  * one-ray walk does. */
 PRISM_HOT void rays8_box(float3 lo, float3 hi, const RayPacket* p, float8* near_t, float8* far_t) {
   float8 ax = ((float8)(lo.x) - p->ox) * p->ix, bx = ((float8)(hi.x) - p->ox) * p->ix;
   float8 ay = ((float8)(lo.y) - p->oy) * p->iy, by = ((float8)(hi.y) - p->oy) * p->iy;
   float8 az = ((float8)(lo.z) - p->oz) * p->iz, bz = ((float8)(hi.z) - p->oz) * p->iz;
-  *near_t = rays8_max(rays8_max(rays8_min(ax, bx), rays8_min(ay, by)), rays8_min(az, bz));
+  *near_t = rays8_max(rays8_max(rays8_max(rays8_min(ax, bx), rays8_min(ay, by)), rays8_min(az, bz)), p->tmin);
   *far_t = rays8_min(rays8_min(rays8_max(ax, bx), rays8_max(ay, by)), rays8_max(az, bz));
 }
+
+/* The lanes still searching: those whose far end is not RAYS8_CLOSED. */
+PRISM_HOT int8 rays8_open(const RayPacket* p) { return p->best != (float8)(RAYS8_CLOSED); }
 
 /* A packet's closest hits lane by lane, for what takes the rays one at a time:
  * best[l] the far end of lane l's search, prim[l] its hit (-1: none yet). */
@@ -282,7 +285,7 @@ PRISM_HOT void rays8_leaf_transmittance(__global const TriPacketGpu* pk, int8 re
                                         RayPacket* p, const Geometry* geom, __global const MaterialGpu* materials) {
   if (rays8_one_by_one(pk)) {
     int in[8], alone[8];
-    vstore8(reach & (p->best != (float8)(RAYS8_CLOSED)), 0, in);
+    vstore8(reach & rays8_open(p), 0, in);
     for (int l = 0; l < PACKET_RAYS; ++l) {
       alone[l] = 0;
       if (!in[l]) continue;
