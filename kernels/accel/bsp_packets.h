@@ -61,14 +61,8 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
     return;
   }
   __global const BspNodeGpu* nodes = (__global const BspNodeGpu*)(accel_nodes + 2);
-  /* The scene's box, as accel_clip_scene clips one ray to it. Its fmin and
-   * fmax give the same ends as rays8_min and rays8_max: no NaN reaches them
-   * (the box is finite, or inverted where the scene has only unbounded
-   * primitives), and a zero end's sign, which they may leave otherwise, is
-   * only ever compared. */
   float8 t0, t1;
-  rays8_box(accel_nodes[0].xyz, accel_nodes[1].xyz, p, &t0, &t1);
-  t1 = rays8_min(t1, p->best) * ACCEL_FAR_SCALE;
+  rays8_clip_scene(accel_nodes, p, &t0, &t1);
   /* The near side along each axis, the same for every lane. */
   const int up[3] = {p->ix.s0 >= 0.0f, p->iy.s0 >= 0.0f, p->iz.s0 >= 0.0f};
   int stack_node[PRISM_ACCEL_STACK];

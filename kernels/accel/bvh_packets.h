@@ -58,7 +58,12 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
   float stack_key[PRISM_ACCEL_STACK]; /* the least entry distance */
   int sp = 0;
   int code = 0; /* the root */
-  int8 reach = rays8_open(p); /* the lanes whose own tests admit `code` */
+  /* The lanes whose own tests admit `code`: at the root, those that meet the
+   * scene's box (bvh_meets_scene's test, eight rays at a time). */
+  float8 t0, t1;
+  rays8_clip_scene(accel_nodes, p, &t0, &t1);
+  int8 reach = rays8_open(p) & (t0 <= t1);
+  if (!any8_t(reach)) return;
   for (;;) {
     if (code >= 0) {
       __global const float* nf = (__global const float*)(nodes + BVH_NODE_WORDS * code);

@@ -128,6 +128,18 @@ PRISM_HOT void rays8_box(float3 lo, float3 hi, const RayPacket* p, float8* near_
   *far_t = rays8_min(rays8_min(rays8_max(ax, bx), rays8_max(ay, by)), rays8_max(az, bz));
 }
 
+/* The packet's rays clipped to the scene's box (the header words) as
+ * accel_clip_scene clips one ray: entry *t0, exit *t1 cut to each lane's best
+ * and widened by ACCEL_FAR_SCALE; a lane meets the box where t0 <= t1. Its
+ * fmin and fmax give the same ends as rays8_min and rays8_max: no NaN reaches
+ * them (the box is finite, or inverted where the scene has only unbounded
+ * primitives), and a zero end's sign, which they may leave otherwise, is only
+ * ever compared. */
+PRISM_HOT void rays8_clip_scene(__global const float4* header, const RayPacket* p, float8* t0, float8* t1) {
+  rays8_box(header[0].xyz, header[1].xyz, p, t0, t1);
+  *t1 = rays8_min(*t1, p->best) * ACCEL_FAR_SCALE;
+}
+
 /* The lanes still searching: those whose far end is not RAYS8_CLOSED. */
 PRISM_HOT int8 rays8_open(const RayPacket* p) { return p->best != (float8)(RAYS8_CLOSED); }
 
