@@ -112,14 +112,16 @@ PRISM_HOT int bvh_node_mask(__global const float8* n, const BvhRay* r, float tmi
   return b2.x | b2.y;
 }
 
-/* Whether the ray can meet anything in the tree: the root's test on the scene's
- * box (the header words), which holds every child's box, both being unions of
- * the same primitive boxes. The same arithmetic is monotone in the box, so
- * this turns away only rays the root would turn away, and sooner: most
- * incoherent rays miss the scene (73% of prism-bench's random rays), and for
- * them the walk's set-up was most of the cost. Not over moving primitives: a
- * child's box there is a blend at the ray's time, which may round past the
- * scene's box. */
+/* Whether the ray can meet anything in the tree: the root's slab test on the
+ * scene's box (the header words), which holds every child's box, both being
+ * unions of the same primitive boxes. Taking the nearer and the farther of
+ * each axis' two slabs gives an entry no later and an exit no earlier than the
+ * sign-chosen slabs of the same box, and the arithmetic is monotone in the
+ * box, so this turns away only rays the root would, before the walk's set-up:
+ * most incoherent rays miss the scene (73% of prism-bench's random rays). Not
+ * over moving primitives: their boxes at shutter open and close may lie
+ * outside the swept box the scene's is made of (movingBoxes pushes them out),
+ * and a blend of them rounds. */
 PRISM_HOT bool bvh_meets_scene(__global const float4* header, float3 o, float3 d, float tmin, float tlimit) {
 #ifdef PRISM_BVH_MOTION
   return true;

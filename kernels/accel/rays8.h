@@ -117,8 +117,8 @@ typedef struct RayPacket {
 
 /* Where the eight rays enter the box lo..hi (no earlier than their tmin) and
  * leave it (its far planes, not yet cut to the rays' far ends): the test the
- * octree's cells, the BSP's scene box and the BVH's children in packets of
- * mixed direction signs share; each caller cuts and widens the far end as its
+ * octree's cells, the scene's box (rays8_clip_scene) and the BVH's children in
+ * packets of mixed direction signs share; each caller cuts and widens the far end as its
  * one-ray walk does. */
 PRISM_HOT void rays8_box(float3 lo, float3 hi, const RayPacket* p, float8* near_t, float8* far_t) {
   float8 ax = ((float8)(lo.x) - p->ox) * p->ix, bx = ((float8)(hi.x) - p->ox) * p->ix;
@@ -130,11 +130,11 @@ PRISM_HOT void rays8_box(float3 lo, float3 hi, const RayPacket* p, float8* near_
 
 /* The packet's rays clipped to the scene's box (the header words) as
  * accel_clip_scene clips one ray: entry *t0, exit *t1 cut to each lane's best
- * and widened by ACCEL_FAR_SCALE; a lane meets the box where t0 <= t1. Its
- * fmin and fmax give the same ends as rays8_min and rays8_max: no NaN reaches
- * them (the box is finite, or inverted where the scene has only unbounded
- * primitives), and a zero end's sign, which they may leave otherwise, is only
- * ever compared. */
+ * and widened by ACCEL_FAR_SCALE; a lane meets the box where t0 <= t1.
+ * accel_clip_scene's fmin and fmax give the same ends as rays8_min and
+ * rays8_max: no NaN reaches them (the box is finite, or inverted where the
+ * scene has only unbounded primitives), and a zero end's sign, which they may
+ * leave otherwise, is only ever compared. */
 PRISM_HOT void rays8_clip_scene(__global const float4* header, const RayPacket* p, float8* t0, float8* t1) {
   rays8_box(header[0].xyz, header[1].xyz, p, t0, t1);
   *t1 = rays8_min(*t1, p->best) * ACCEL_FAR_SCALE;
