@@ -3,7 +3,8 @@
 // u and v (up to exact ties in t), the same occlusion, and the same
 // transmittance through semitransparent primitives. Over a scene with every
 // primitive kind, procedural meshes and real meshes, with camera rays,
-// random rays, shadow rays and rays aimed at vertices and edges.
+// random rays, shadow rays and rays aimed at vertices and edges, and rays from
+// afar past cell faces that lie within a rounding of the primitives.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -11,10 +12,12 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <random>
 #include <sstream>
 
 #include "accel/accel_scenes.h"
+#include "kernels/shared/octree_node_gpu.h"
 #include "render/ray_queries.h"
 #include "support/shared_context.h"
 
@@ -482,6 +485,191 @@ TEST_CASE("closest hits at exact ties and a few ulps apart: every structure answ
     checkIdentical("packets of one sign against none", alike_ref,
                    engine.intersect(alike, nullptr, RayCoherence::Coherent));
   }
+}
+
+namespace {
+
+// The same occlusion answer as `none` on every segment, none excused.
+void checkSameOcclusion(const char* what, const std::vector<std::uint8_t>& ref, const std::vector<std::uint8_t>& got) {
+  REQUIRE(got.size() == ref.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < ref.size(); ++i) differ += ref[i] != got[i];
+  INFO(what << ": " << differ << " of " << ref.size() << " occlusion answers differ");
+  CHECK(differ == 0);
+}
+
+// Every structure against `none`, to the bit, on `rays` one at a time and in
+// packets (eight consecutive rays a packet), and on segments from each ray's
+// origin to one float past its hit, which just counts (transmittance counts
+// hits in (tmin, tmax)): there a cell's entry may round past tmax, and the
+// octree keeps the cell only through its widened tmax (octree_next_leaf).
+void checkAgainstNone(const std::vector<ObjectGpu>& objects, const std::vector<QueryRay>& rays) {
+  RayQueryEngine none(sharedContext(), objects, AccelKind::None);
+  const std::vector<HitGpu> ref = none.intersect(rays);
+  std::vector<QueryRay> segments = rays;
+  std::size_t hits = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    if (ref[i].prim >= 0) {
+      ++hits;
+      segments[i].tmax = std::nextafter(ref[i].t, INFINITY);
+    }
+  const std::vector<std::uint8_t> blocked = none.occluded(segments);
+  std::size_t blocked_count = 0;
+  for (std::uint8_t b : blocked) blocked_count += b;
+  INFO(hits << " of " << rays.size() << " rays hit; " << blocked_count << " segments blocked");
+  REQUIRE(hits > rays.size() / 2);
+  CHECK(blocked_count == hits);  // each segment holds its ray's hit
+  for (AccelKind kind : {AccelKind::Bvh, AccelKind::Octree, AccelKind::Bsp}) {
+    RayQueryEngine engine(sharedContext(), objects, kind, {}, {}, PacketUse::Always);
+    INFO(describeAccel(engine.accel()));
+    REQUIRE(engine.tracesPackets());
+    checkIdentical("one ray at a time against none", ref, engine.intersect(rays));
+    checkIdentical("packets against none", ref, engine.intersect(rays, nullptr, RayCoherence::Coherent));
+    checkSameOcclusion("segments one at a time against none", blocked, engine.occluded(segments));
+    checkSameOcclusion("segments in packets against none", blocked,
+                       engine.occluded(segments, nullptr, RayCoherence::Coherent));
+  }
+}
+
+ObjectGpu triangleRecord(const float v[9]) {
+  ObjectGpu g = identityObject(OBJECT_TRIANGLE, 0);
+  std::copy(v, v + 9, g.p);
+  return g;
+}
+
+// A layer of small right triangles lying flat in the plane z = 3/8, one in each
+// cell of a 16 x 16 grid, their legs along x and y (corners and legs on a 2^-16
+// grid), between a triangle far above the layer and one far below it. Every
+// box around the layer (each triangle's, so each octree leaf's) is a slab a few
+// floats thick whose sides lie a few floats outside the legs (a triangle's box
+// grows by 2^-20 of its size and a float), and the BSP's cells around the layer
+// are as thin: seen from afar, a ray's interval in them is a float or two, and
+// where it passes by a leg the interval's ends, the slabs' and the planes' t
+// all round into one another. The triangles above and below put
+// planes on both sides of the layer, so the one-ray BSP walk reaches the
+// layer's cells from its stack (its interval's far end from the pop) as well
+// as by descending (from a split).
+struct FlatLayer {
+  std::vector<ObjectGpu> objects;
+  std::vector<std::array<float, 3>> points;  // on the legs and at the corners, on a 2^-16 grid
+};
+
+FlatLayer flatLayerWithLegs(std::uint64_t seed) {
+  FlatLayer out;
+  std::mt19937_64 rng(seed);
+  auto steps = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo)); };
+  const float z = 0.375f, step = 0x1p-12f;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j) {
+      // The right angle at (x, y), legs lx, ly of 1/64 to 1/32 pointing either way.
+      const float x = i + 0.25f + steps(0, 2048) * step, y = j + 0.25f + steps(0, 2048) * step;
+      const float lx = (rng() % 2 ? 1 : -1) * steps(1024, 2048) * 0x1p-16f;
+      const float ly = (rng() % 2 ? 1 : -1) * steps(1024, 2048) * 0x1p-16f;
+      const float v[9] = {x, y, z, x + lx, y, z, x, y + ly, z};
+      out.objects.push_back(triangleRecord(v));
+      out.points.push_back({x, y, z});
+      out.points.push_back({x + lx, y, z});
+      out.points.push_back({x, y + ly, z});
+      for (int k = 1; k * step < std::fabs(lx); k += 4) out.points.push_back({x + std::copysign(k * step, lx), y, z});
+      for (int k = 1; k * step < std::fabs(ly); k += 4) out.points.push_back({x, y + std::copysign(k * step, ly), z});
+    }
+  const float above[9] = {0, 0, z + 11, 0.5f, 0, z + 11, 0, 0.5f, z + 11};
+  const float below[9] = {0, 0, z - 7, 0.5f, 0, z - 7, 0, 0.5f, z - 7};
+  out.objects.push_back(triangleRecord(above));
+  out.objects.push_back(triangleRecord(below));
+  return out;
+}
+
+// Rays in packets of eight whose directions share their signs (so the BSP's
+// packets descend together), each passing exactly through one of `points`:
+// d on a 2^-8 grid, the origin m whole steps of d back (m up to 64, up to some
+// 220 units away), exact on the 2^-16 grid below 256, so the ray meets the
+// point at t = m. For m of 32 and more an ulp of t is 2^-18 or more, far more
+// than the ray spends inside the layer's slabs.
+std::vector<QueryRay> raysThrough(const std::vector<std::array<float, 3>>& points, std::size_t count,
+                                  std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<QueryRay> rays;
+  while (rays.size() < count) {
+    float sign[3];
+    for (float& s : sign) s = rng() % 2 ? 1.0f : -1.0f;
+    for (int lane = 0; lane < 8; ++lane) {
+      const std::array<float, 3>& p = points[rng() % points.size()];
+      float d[3];
+      for (int a = 0; a < 3; ++a) d[a] = sign[a] * (16 + rng() % 496) * 0x1p-8f;
+      const float m = static_cast<float>(1 + rng() % 64);
+      rays.push_back(QueryRay{p[0] - m * d[0], p[1] - m * d[1], p[2] - m * d[2], 0, d[0], d[1], d[2], INFINITY});
+    }
+  }
+  return rays;
+}
+
+}  // namespace
+
+TEST_CASE("rays from afar through the legs of flat triangles: every structure answers as brute force, one ray at a "
+          "time and in packets",
+          "[accel][packets]") {
+  // Where a ray passes by a leg, the t at which it meets the leaf's slab and
+  // the t at which it leaves through the leg's face round to one another: the
+  // octree keeps the leaf only through the widened far end of its box test
+  // (octree_clip's octree_far, and its packet twin in rays8_cell), and the BSP
+  // goes to both sides of a plane by a leg only through ACCEL_CELL_EPS on its
+  // interval's ends (bsp_next_leaf: the near end, the far end from a pop and
+  // from a split; the packet walk's t0e and t1e).
+  const FlatLayer layer = flatLayerWithLegs(7);
+  checkAgainstNone(layer.objects, raysThrough(layer.points, 40000, 11));
+}
+
+TEST_CASE("every structure answers as brute force on flat triangles 2^-100 either side of the octree's centre "
+          "plane, hit from afar",
+          "[accel]") {
+  // Two layers of triangles lying flat at z = +-2^-100, each the other
+  // reflected through the origin, so the octree's root cube is symmetric and
+  // its centre plane is z = 0. The root's box is a slab some 3e-7 thick around
+  // that plane (the triangles' boxes grow by 2^-20 of their size): seen from
+  // ten units away, the ray's entry into it and its crossing of z = 0 often
+  // round to the same t, and then only the widened entry (octree_push's t0e)
+  // puts the octants on the entry side on the stack. The rays meet the
+  // triangles well inside, where no rounding doubts the hit.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<float> u01(0, 1);
+  const float z = 0x1p-100f;
+  std::vector<ObjectGpu> objects;
+  for (int i = 0; i < 300; ++i) {
+    const float x = -1 + 2 * u01(rng), y = -1 + 2 * u01(rng);
+    const float v[9] = {x, y, z, x + 0.05f + 0.1f * u01(rng), y, z, x, y + 0.05f + 0.1f * u01(rng), z};
+    objects.push_back(triangleRecord(v));
+  }
+  for (int i = 0; i < 300; ++i) {
+    ObjectGpu g = objects[i];
+    for (float& f : g.p) f = -f;
+    objects.push_back(g);
+  }
+  const std::unique_ptr<DeviceAccel> octree = buildAccel(AccelKind::Octree, objects);
+  const OctreeNodeGpu& root = reinterpret_cast<const OctreeNodeGpu*>(octree->nodes.data() + 2)[0];
+  REQUIRE(root.child_mask != 0);
+  REQUIRE(root.cz == 0.0f);
+  std::normal_distribution<float> normal;
+  std::vector<QueryRay> rays;
+  for (int k = 0; k < 20000; ++k) {
+    const float* p = objects[rng() % objects.size()].p;
+    float a = u01(rng), b = u01(rng);
+    if (a + b > 1) {
+      a = 1 - a;
+      b = 1 - b;
+    }
+    float target[3], dir[3], length = 0;
+    for (int c = 0; c < 3; ++c) {
+      target[c] = p[c] + a * (p[3 + c] - p[c]) + b * (p[6 + c] - p[c]);
+      dir[c] = normal(rng);
+      length += dir[c] * dir[c];
+    }
+    length = std::sqrt(length) / 10;
+    float o[3];
+    for (int c = 0; c < 3; ++c) o[c] = target[c] - dir[c] / length;
+    rays.push_back(QueryRay{o[0], o[1], o[2], 0, target[0] - o[0], target[1] - o[1], target[2] - o[2], INFINITY});
+  }
+  checkAgainstNone(objects, rays);
 }
 
 TEST_CASE("transmittance counts each semitransparent primitive once, however its t rounds", "[accel]") {
