@@ -118,8 +118,8 @@ typedef struct RayPacket {
 /* Where the eight rays enter the box lo..hi (no earlier than their tmin) and
  * leave it (its far planes, not yet cut to the rays' far ends): the test the
  * octree's cells, the scene's box (rays8_clip_scene) and the BVH's children in
- * packets of mixed direction signs share; each caller cuts and widens the far end as its
- * one-ray walk does. */
+ * packets of mixed direction signs share; each caller cuts and widens the far
+ * end as its one-ray walk does. */
 PRISM_HOT void rays8_box(float3 lo, float3 hi, const RayPacket* p, float8* near_t, float8* far_t) {
   float8 ax = ((float8)(lo.x) - p->ox) * p->ix, bx = ((float8)(hi.x) - p->ox) * p->ix;
   float8 ay = ((float8)(lo.y) - p->oy) * p->iy, by = ((float8)(hi.y) - p->oy) * p->iy;
