@@ -620,6 +620,49 @@ TEST_CASE("rays from afar through the legs of flat triangles: every structure an
   checkAgainstNone(layer.objects, raysThrough(layer.points, 40000, 11));
 }
 
+namespace {
+
+// 300 small right triangles lying flat at height z over [-1, 1]^2, legs of
+// 0.05 to 0.15 along x and y.
+std::vector<ObjectGpu> flatLayer(float z, std::mt19937_64& rng) {
+  std::uniform_real_distribution<float> u01(0, 1);
+  std::vector<ObjectGpu> objects;
+  for (int i = 0; i < 300; ++i) {
+    const float x = -1 + 2 * u01(rng), y = -1 + 2 * u01(rng);
+    const float v[9] = {x, y, z, x + 0.05f + 0.1f * u01(rng), y, z, x, y + 0.05f + 0.1f * u01(rng), z};
+    objects.push_back(triangleRecord(v));
+  }
+  return objects;
+}
+
+// Each object's reflection through the origin, added: the octree's root cube
+// is then symmetric about the origin, and its centre planes are x, y, z = 0.
+void addReflections(std::vector<ObjectGpu>& objects) {
+  const std::size_t count = objects.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    ObjectGpu g = objects[i];
+    for (float& f : g.p) f = -f;
+    objects.push_back(g);
+  }
+}
+
+// A ray from `distance` away, in a direction drawn from `normal` per axis,
+// whose direction vector ends at `target` (t = 1 there).
+QueryRay rayFromAfar(const float target[3], float distance, std::mt19937_64& rng,
+                     std::normal_distribution<float>& normal) {
+  float dir[3], length = 0;
+  for (int c = 0; c < 3; ++c) {
+    dir[c] = normal(rng);
+    length += dir[c] * dir[c];
+  }
+  length = std::sqrt(length) / distance;
+  float o[3];
+  for (int c = 0; c < 3; ++c) o[c] = target[c] - dir[c] / length;
+  return QueryRay{o[0], o[1], o[2], 0, target[0] - o[0], target[1] - o[1], target[2] - o[2], INFINITY};
+}
+
+}  // namespace
+
 TEST_CASE("every structure answers as brute force on flat triangles 2^-100 either side of the octree's centre "
           "plane, hit from afar",
           "[accel]") {
@@ -633,18 +676,8 @@ TEST_CASE("every structure answers as brute force on flat triangles 2^-100 eithe
   // triangles well inside, where no rounding doubts the hit.
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<float> u01(0, 1);
-  const float z = 0x1p-100f;
-  std::vector<ObjectGpu> objects;
-  for (int i = 0; i < 300; ++i) {
-    const float x = -1 + 2 * u01(rng), y = -1 + 2 * u01(rng);
-    const float v[9] = {x, y, z, x + 0.05f + 0.1f * u01(rng), y, z, x, y + 0.05f + 0.1f * u01(rng), z};
-    objects.push_back(triangleRecord(v));
-  }
-  for (int i = 0; i < 300; ++i) {
-    ObjectGpu g = objects[i];
-    for (float& f : g.p) f = -f;
-    objects.push_back(g);
-  }
+  std::vector<ObjectGpu> objects = flatLayer(0x1p-100f, rng);
+  addReflections(objects);
   const std::unique_ptr<DeviceAccel> octree = buildAccel(AccelKind::Octree, objects);
   const OctreeNodeGpu& root = reinterpret_cast<const OctreeNodeGpu*>(octree->nodes.data() + 2)[0];
   REQUIRE(root.child_mask != 0);
@@ -658,16 +691,9 @@ TEST_CASE("every structure answers as brute force on flat triangles 2^-100 eithe
       a = 1 - a;
       b = 1 - b;
     }
-    float target[3], dir[3], length = 0;
-    for (int c = 0; c < 3; ++c) {
-      target[c] = p[c] + a * (p[3 + c] - p[c]) + b * (p[6 + c] - p[c]);
-      dir[c] = normal(rng);
-      length += dir[c] * dir[c];
-    }
-    length = std::sqrt(length) / 10;
-    float o[3];
-    for (int c = 0; c < 3; ++c) o[c] = target[c] - dir[c] / length;
-    rays.push_back(QueryRay{o[0], o[1], o[2], 0, target[0] - o[0], target[1] - o[1], target[2] - o[2], INFINITY});
+    float target[3];
+    for (int c = 0; c < 3; ++c) target[c] = p[c] + a * (p[3 + c] - p[c]) + b * (p[6 + c] - p[c]);
+    rays.push_back(rayFromAfar(target, 10, rng, normal));
   }
   checkAgainstNone(objects, rays);
 }
@@ -688,12 +714,7 @@ TEST_CASE("the one-ray octree walk reaches the octant between two crossings that
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<float> u01(0, 1);
   const float d = 0x1p-100f;
-  std::vector<ObjectGpu> objects;
-  for (int i = 0; i < 300; ++i) {
-    const float x = -1 + 2 * u01(rng), y = -1 + 2 * u01(rng);
-    const float v[9] = {x, y, d, x + 0.05f + 0.1f * u01(rng), y, d, x, y + 0.05f + 0.1f * u01(rng), d};
-    objects.push_back(triangleRecord(v));
-  }
+  std::vector<ObjectGpu> objects = flatLayer(d, rng);
   std::vector<std::size_t> hugging;  // legs along x = +-d or y = +-d
   for (int i = 0; i < 40; ++i) {
     const float y = -1 + 2 * u01(rng), side = rng() % 2 ? 1.0f : -1.0f;
@@ -704,11 +725,7 @@ TEST_CASE("the one-ray octree walk reaches the octant between two crossings that
     objects.push_back(triangleRecord(v));
   }
   const std::size_t half = objects.size();
-  for (std::size_t i = 0; i < half; ++i) {
-    ObjectGpu g = objects[i];
-    for (float& f : g.p) f = -f;
-    objects.push_back(g);
-  }
+  addReflections(objects);
   std::normal_distribution<float> normal;
   std::vector<QueryRay> rays;
   for (int k = 0; k < 100000; ++k) {
@@ -718,18 +735,11 @@ TEST_CASE("the one-ray octree walk reaches the octant between two crossings that
     const int axis = q[0] == q[6] ? 0 : 1;  // the coordinate that stays +-d along the leg
     const float* end = q + (axis == 0 ? 6 : 3);
     const float s = u01(rng);
-    float target[3], dir[3], length = 0;
+    float target[3];
     for (int c = 0; c < 3; ++c) target[c] = q[c] + s * (end[c] - q[c]);
     const float* across = q + (axis == 0 ? 3 : 6);
     target[axis] = q[axis] + (across[axis] - q[axis]) * (u01(rng) * 1e-5f);
-    for (int c = 0; c < 3; ++c) {
-      dir[c] = normal(rng);
-      length += dir[c] * dir[c];
-    }
-    length = std::sqrt(length) / 10;
-    float o[3];
-    for (int c = 0; c < 3; ++c) o[c] = target[c] - dir[c] / length;
-    rays.push_back(QueryRay{o[0], o[1], o[2], 0, target[0] - o[0], target[1] - o[1], target[2] - o[2], INFINITY});
+    rays.push_back(rayFromAfar(target, 10, rng, normal));
   }
   checkAgainstNone(objects, rays);
 }
