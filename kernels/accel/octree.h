@@ -5,12 +5,15 @@
  * an inner cell the ray's parameters at the three centre planes, sorted, cut
  * its interval into at most four pieces, one per octant it passes (in the
  * spirit of Revelles et al. 2000); the octants that exist are pushed farthest
- * first, so the stack holds cells in the order the ray meets them.
+ * first, so the stack holds cells in the order the ray meets them. Where
+ * crossings round together, the octants of the other orders go on too
+ * (docs/accel.md, "Crossings that round together").
  *
  * The stack holds cell indices only: a cell's interval is recomputed from its
  * box when it is entered. Since the boxes lie inside their cells, the entries
- * of the cells on the stack still grow from top to bottom, so the first cell
- * that starts after the best hit ends the search.
+ * of the cells on the stack still grow from top to bottom (within
+ * ACCEL_CELL_EPS among tied octants), so the first cell that starts after the
+ * best hit by more than that ends the search.
  *
  * Interval ends are widened by ACCEL_CELL_EPS when deciding which octants a
  * ray passes, so rounding never skips an octant it grazes. */
@@ -39,6 +42,10 @@ PRISM_HOT void octree_push1(__global const OctreeNodeGpu* n, int mask, int octan
   w->stack[*sp] = n->first + popcount(mask & ((1 << octant) - 1));
   *sp += (take && ((mask >> octant) & 1)) ? 1 : 0;
 }
+
+/* Whether two sorted crossings, a <= b, lie within the slack accel_before
+ * allows, so that rounding may have swapped them; false where b is none. */
+PRISM_HOT bool octree_tie(float a, float b) { return b != PRISM_INF && b - a <= ACCEL_CELL_EPS * fabs(b); }
 
 /* Pushes the octants an inner cell's interval [t0, t1] passes, farthest
  * first. The ray's parameters at the three centre planes, sorted, cut the
@@ -70,14 +77,28 @@ PRISM_HOT void octree_push(__global const OctreeNodeGpu* n, float3 o, float3 inv
   ts = swap ? s2 : s1; s2 = swap ? s1 : s2; s1 = ts;
   ta = swap ? a2 : a1; a2 = swap ? a1 : a2; a1 = ta;
   swap = s0 > s1;
-  s0 = swap ? s1 : s0;
+  ts = swap ? s1 : s0; s1 = swap ? s0 : s1; s0 = ts;
   ta = swap ? a1 : a0; a1 = swap ? a0 : a1; a0 = ta;
   // clang-format on
   int b1 = bits ^ a0, b2 = b1 ^ a1, b3 = b2 ^ a2;
+  /* Crossings this close may lie the other way round: the ray then passes an
+   * octant of the other order instead, over a stretch too short for the
+   * floats to place. Those octants are pushed too, each above the one it may
+   * replace; a box the ray truly misses fails its clip on entry. Ties are
+   * rare, so a branch the predictor learns skips them. */
+  bool tie01 = octree_tie(s0, s1), tie12 = octree_tie(s1, s2), tie02 = octree_tie(s0, s2);
   int mask = n->child_mask;
   octree_push1(n, mask, b3, s2 != PRISM_INF, w, sp);
   octree_push1(n, mask, b2, s1 != PRISM_INF, w, sp);
+  if (tie12 | tie02) {
+    octree_push1(n, mask, bits ^ a1 ^ a2, tie02, w, sp);
+    octree_push1(n, mask, b1 ^ a2, tie12, w, sp);
+  }
   octree_push1(n, mask, b1, s0 != PRISM_INF, w, sp);
+  if (tie01 | tie02) {
+    octree_push1(n, mask, bits ^ a2, tie02, w, sp);
+    octree_push1(n, mask, bits ^ a1, tie01, w, sp);
+  }
   octree_push1(n, mask, bits, true, w, sp);
 }
 

@@ -698,47 +698,78 @@ TEST_CASE("every structure answers as brute force on flat triangles 2^-100 eithe
   checkAgainstNone(objects, rays);
 }
 
-// A known defect, kept as a reproducer and left out of the suite (hidden tag):
-// in the one-ray ordered octree walk, two centre-plane crossings that round
-// to the same t (or swap) make octree_push take one order and skip the octant
-// between them; ACCEL_CELL_EPS widens the interval's ends, not the order of
-// its crossings. Found on 2026-12-05 with the layers of the case above plus
-// triangles whose legs lie 2^-100 from x = 0 or y = 0, the rays aimed just
-// inside those legs: the octree's one-ray walk disagrees with brute force (the
-// same triangle test, so every difference is a triangle it never reached) on
-// 9,929 of these 100,000 rays; the BVH, the BSP and the octree's packet walk
-// agree on all. Run with `accel_tests "[octree-crossing-ties]"`; it fails
-// until octree_push also pushes the octant of the other order at a near-tie.
-TEST_CASE("the one-ray octree walk reaches the octant between two crossings that round together",
-          "[.][octree-crossing-ties]") {
+// Where two or three of an octree cell's centre-plane crossings round to the
+// same t, or swap, the ray may pass an octant of the other order over a
+// stretch the floats cannot place; octree_push pushes those octants too
+// (octree_tie). Found on 2026-12-05 with the layers of the case above plus
+// triangles hugging x = 0 or y = 0: the one-ray walk, taking one order only,
+// disagreed with brute force on 9,929 of 100,000 rays there. Here the root is
+// a cube (small triangles fill [-1, 1]^3), so the third crossing falls before,
+// between or after a near-tie of the other two, and triangles cornered 2^-100
+// from the centre point bring ties of all three.
+TEST_CASE("the one-ray octree walk reaches the octants between centre-plane crossings that round together",
+          "[accel]") {
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<float> u01(0, 1);
+  std::uniform_real_distribution<float> u01(0, 1), u11(-1, 1);
   const float d = 0x1p-100f;
   std::vector<ObjectGpu> objects = flatLayer(d, rng);
-  std::vector<std::size_t> hugging;  // legs along x = +-d or y = +-d
+  for (int i = 0; i < 300; ++i) {  // the cube's filling
+    const float x = 0.9f * u11(rng), y = 0.9f * u11(rng), z = 0.9f * u11(rng);
+    const float v[9] = {x, y, z, x + 0.05f, y, z, x, y, z + 0.05f};
+    objects.push_back(triangleRecord(v));
+  }
+  std::vector<std::size_t> legged, cornered;  // a leg or a corner 2^-100 from the centre planes
   for (int i = 0; i < 40; ++i) {
-    const float y = -1 + 2 * u01(rng), side = rng() % 2 ? 1.0f : -1.0f;
+    const float y = u11(rng), side = rng() % 2 ? 1.0f : -1.0f;
     float v[9] = {side * d, y, d, side * (d + 0.1f), y, d, side * d, y + 0.1f, d};
     if (rng() % 2)
       for (int k = 0; k < 3; ++k) std::swap(v[3 * k], v[3 * k + 1]);
-    hugging.push_back(objects.size());
+    legged.push_back(objects.size());
+    objects.push_back(triangleRecord(v));
+  }
+  for (int i = 0; i < 40; ++i) {
+    // The right angle at (+-d, +-d, +-d), the legs outward along two axes.
+    float corner[3], v[9];
+    for (float& c : corner) c = rng() % 2 ? d : -d;
+    const int normal = static_cast<int>(rng() % 3);
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) v[3 * k + c] = corner[c];
+    v[3 * 1 + (normal + 1) % 3] += corner[(normal + 1) % 3] > 0 ? 0.1f : -0.1f;
+    v[3 * 2 + (normal + 2) % 3] += corner[(normal + 2) % 3] > 0 ? 0.1f : -0.1f;
+    cornered.push_back(objects.size());
     objects.push_back(triangleRecord(v));
   }
   const std::size_t half = objects.size();
   addReflections(objects);
+  const std::unique_ptr<DeviceAccel> octree = buildAccel(AccelKind::Octree, objects);
+  const OctreeNodeGpu& root = reinterpret_cast<const OctreeNodeGpu*>(octree->nodes.data() + 2)[0];
+  REQUIRE(root.child_mask != 0);
+  REQUIRE((root.cx == 0.0f && root.cy == 0.0f && root.cz == 0.0f));
   std::normal_distribution<float> normal;
   std::vector<QueryRay> rays;
+  auto reflected = [&](std::size_t i) { return objects[i + (rng() % 2 ? half : 0)].p; };
   for (int k = 0; k < 100000; ++k) {
-    // A point on a hugging triangle's leg along the centre plane, moved
-    // inside by up to 1e-5 of its other leg.
-    const float* q = objects[hugging[rng() % hugging.size()] + (rng() % 2 ? half : 0)].p;
-    const int axis = q[0] == q[6] ? 0 : 1;  // the coordinate that stays +-d along the leg
-    const float* end = q + (axis == 0 ? 6 : 3);
-    const float s = u01(rng);
     float target[3];
-    for (int c = 0; c < 3; ++c) target[c] = q[c] + s * (end[c] - q[c]);
-    const float* across = q + (axis == 0 ? 3 : 6);
-    target[axis] = q[axis] + (across[axis] - q[axis]) * (u01(rng) * 1e-5f);
+    if (k % 2) {
+      // A point on a leg along a centre plane, moved inside by up to 1e-5 of
+      // the other leg.
+      const float* q = reflected(legged[rng() % legged.size()]);
+      const int axis = q[0] == q[6] ? 0 : 1;  // the coordinate that stays +-d along the leg
+      const float* end = q + (axis == 0 ? 6 : 3);
+      const float s = u01(rng);
+      for (int c = 0; c < 3; ++c) target[c] = q[c] + s * (end[c] - q[c]);
+      const float* across = q + (axis == 0 ? 3 : 6);
+      target[axis] = q[axis] + (across[axis] - q[axis]) * (u01(rng) * 1e-5f);
+    } else {
+      // A point within 1e-5 of the legs from the right angle.
+      const float* q = reflected(cornered[rng() % cornered.size()]);
+      float a = u01(rng), b = u01(rng);
+      if (a + b > 1) {
+        a = 1 - a;
+        b = 1 - b;
+      }
+      for (int c = 0; c < 3; ++c) target[c] = q[c] + 1e-5f * (a * (q[3 + c] - q[c]) + b * (q[6 + c] - q[c]));
+    }
     rays.push_back(rayFromAfar(target, 10, rng, normal));
   }
   checkAgainstNone(objects, rays);
@@ -768,10 +799,6 @@ TEST_CASE("transmittance counts each semitransparent primitive once, however its
     for (std::size_t i = 0; i < ref.size(); ++i) {
       differ += !sameBits(ref[i], got[i]);
       darker += got[i] < ref[i];
-      if (!sameBits(ref[i], got[i]) && getenv("DBG")) {
-        const QueryRay& r = tiny.rays[i];
-        printf("ray %zu o %.9g %.9g %.9g d %.9g %.9g %.9g tmax %.9g ref %g got %g\n", i, r.ox, r.oy, r.oz, r.dx, r.dy, r.dz, r.tmax, ref[i], got[i]);
-      }
     }
     INFO(accelName(kind) << ": " << differ << " of " << ref.size() << " transmittances differ, " << darker << " darker");
     CHECK(differ == 0);
