@@ -122,26 +122,40 @@ endif()
 # rank 0 is inside MPI: rank 0 runs a progress thread while the window is open
 # (host/cli/mpi_ranks.cpp). The same bits, every unit once, and rank 1 takes a
 # share: without the thread it took 2 of the 19 units in each of three runs,
-# with it 8 or 9 (an even split is 9 or 10; 4 leaves room for a busy machine).
+# with it 8 or 9 (an even split is 9 or 10). A machine busy with other tests
+# can starve rank 1 in one run too (17;2 seen once in a full suite, 3 of 3
+# passes alone after), so up to three runs are made and one must give rank 1
+# at least 4: the missing thread starves it in every run, load only in some.
 # (Open MPI 4.1, Debian 12's; over the loopback interface, which every machine has.)
-run(${CMAKE_COMMAND} -E env OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self OMPI_MCA_btl_tcp_if_include=lo OMPI_MCA_osc=pt2pt
-    ${MPIEXEC} --oversubscribe -np 2 ${PRISM} render "${scene}" -o "${WORK_DIR}/two_tcp.pfm" ${many} --device 0 --stats)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "two ranks over TCP: exited ${rc}:\n${out}${err}")
-endif()
-same(one_many two_tcp)
-if(NOT out MATCHES "; units dealt as devices come free\\)")
-  message(FATAL_ERROR "over TCP the ranks must still deal the units as their devices come free:\n${out}")
-endif()
-unit_shares("${out}")
-list(LENGTH unit_list parts)
-if(parts EQUAL 2)
-  list(GET unit_list 1 rank1)
-else()
-  set(rank1 0)
-endif()
-if(NOT units EQUAL 19 OR rank1 LESS 4)
-  message(FATAL_ERROR "over TCP the ranks must trace the 19 units once, rank 1 at least 4 of them, not ${unit_list}:\n${out}")
+set(shares_seen "")
+foreach(attempt 1 2 3)
+  run(${CMAKE_COMMAND} -E env OMPI_MCA_pml=ob1 OMPI_MCA_btl=tcp,self OMPI_MCA_btl_tcp_if_include=lo OMPI_MCA_osc=pt2pt
+      ${MPIEXEC} --oversubscribe -np 2 ${PRISM} render "${scene}" -o "${WORK_DIR}/two_tcp.pfm" ${many} --device 0 --stats)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "two ranks over TCP: exited ${rc}:\n${out}${err}")
+  endif()
+  same(one_many two_tcp)
+  if(NOT out MATCHES "; units dealt as devices come free\\)")
+    message(FATAL_ERROR "over TCP the ranks must still deal the units as their devices come free:\n${out}")
+  endif()
+  unit_shares("${out}")
+  if(NOT units EQUAL 19)
+    message(FATAL_ERROR "over TCP the ranks must trace the 19 units once between them, not ${unit_list}:\n${out}")
+  endif()
+  list(LENGTH unit_list parts)
+  if(parts EQUAL 2)
+    list(GET unit_list 1 rank1)
+  else()
+    set(rank1 0)
+  endif()
+  string(REPLACE ";" " and " split "${unit_list}")
+  string(APPEND shares_seen " (${split})")
+  if(NOT rank1 LESS 4)
+    break()
+  endif()
+endforeach()
+if(rank1 LESS 4)
+  message(FATAL_ERROR "over TCP rank 1 must take at least 4 of the 19 units in one of three runs; the units were dealt${shares_seen}:\n${out}")
 endif()
 
 # Adaptive sampling: every rank chooses each pass's points from every colour.
