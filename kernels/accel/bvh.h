@@ -42,10 +42,11 @@ typedef struct BvhRay {
 #endif
 } BvhRay;
 
-/* Fills *ray (not returned by value: a struct this size would come back
- * through a hidden noalias pointer, whose inlining marks Oclgrind cannot read). */
-PRISM_HOT void bvh_ray(BvhRay* ray, float3 o, float3 d, float time, __global const float4* header) {
-  float3 inv = accel_safe_rcp(d);
+/* Fills *ray from the ray and inv = accel_safe_rcp(d), which the caller has
+ * for the scene's box already (not returned by value: a struct this size
+ * would come back through a hidden noalias pointer, whose inlining marks
+ * Oclgrind cannot read). */
+PRISM_HOT void bvh_ray(BvhRay* ray, float3 o, float3 d, float3 inv, float time, __global const float4* header) {
   BvhRay r;
 #ifdef PRISM_BVH_MOTION
   float open = header[0].w, close = header[1].w;
@@ -122,12 +123,12 @@ PRISM_HOT int bvh_node_mask(__global const float8* n, const BvhRay* r, float tmi
  * over moving primitives: their boxes at shutter open and close may lie
  * outside the swept box the scene's is made of (movingBoxes pushes them out),
  * and a blend of them rounds. */
-PRISM_HOT bool bvh_meets_scene(__global const float4* header, float3 o, float3 d, float tmin, float tlimit) {
+PRISM_HOT bool bvh_meets_scene(__global const float4* header, float3 o, float3 inv, float tmin, float tlimit) {
 #ifdef PRISM_BVH_MOTION
   return true;
 #else
   float t0, t1;
-  return accel_clip_scene(header, o, accel_safe_rcp(d), tmin, tlimit, &t0, &t1);
+  return accel_clip_scene(header, o, inv, tmin, tlimit, &t0, &t1);
 #endif
 }
 
@@ -141,9 +142,10 @@ PRISM_HOT bool structure_closest(ACCEL_PARAMS, float3 o, float3 d, float time, f
   accel_miss(hit);
   float best = tmax;
   unbounded_closest(geom, accel_unbounded, accel_unbounded_count, o, d, time, tmin, &best, hit);
-  if (!bvh_meets_scene(accel_nodes, o, d, tmin, best)) return hit->prim >= 0;
+  float3 inv = accel_safe_rcp(d);
+  if (!bvh_meets_scene(accel_nodes, o, inv, tmin, best)) return hit->prim >= 0;
   BvhRay r;
-  bvh_ray(&r, o, d, time, accel_nodes);
+  bvh_ray(&r, o, d, inv, time, accel_nodes);
   PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack_code[PRISM_ACCEL_STACK];
@@ -201,9 +203,10 @@ PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu
                                     float tmin, float tmax) {
   float carried = unbounded_transmittance(geom, materials, accel_unbounded, accel_unbounded_count, o, d, time, tmin, tmax);
   if (carried == 0.0f) return 0.0f;
-  if (!bvh_meets_scene(accel_nodes, o, d, tmin, tmax)) return carried;
+  float3 inv = accel_safe_rcp(d);
+  if (!bvh_meets_scene(accel_nodes, o, inv, tmin, tmax)) return carried;
   BvhRay r;
-  bvh_ray(&r, o, d, time, accel_nodes);
+  bvh_ray(&r, o, d, inv, time, accel_nodes);
   PacketRay pr = packet_ray(o, d, time);
   __global const float8* nodes = (__global const float8*)(accel_nodes + 2);
   int stack[PRISM_ACCEL_STACK];
