@@ -164,9 +164,10 @@ class OctreeFlattener {
     s.max_depth = m_max_depth;
     s.sah_cost = m_sah;
     finishReferenceStats(m_refs, s);
-    // One ray's closest hits push up to four octants per cell, three of them
-    // left waiting; shadow rays and packets (kernels/accel/octree_packets.h)
-    // push every stored octant, seven left waiting.
+    // One ray's closest hits push up to four octants per cell, or all eight
+    // where its centre-plane crossings tie (octree_push); shadow rays and
+    // packets (kernels/accel/octree_packets.h) push every stored octant: at
+    // most seven left waiting a level.
     m_out.kernel_options = "-DPRISM_ACCEL_OCTREE " + stackOption(7 * m_max_depth + 2);
     appendNodeWords(m_out.nodes, m_nodes.data(), m_nodes.size());
   }

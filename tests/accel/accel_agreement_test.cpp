@@ -703,9 +703,10 @@ TEST_CASE("every structure answers as brute force on flat triangles 2^-100 eithe
 // stretch the floats cannot place; octree_push pushes those octants too
 // (octree_tie). Found on 2026-12-05 with the layers of the case above plus
 // triangles hugging x = 0 or y = 0: the one-ray walk, taking one order only,
-// disagreed with brute force on 9,929 of 100,000 rays there. Here the root is
-// a cube (small triangles fill [-1, 1]^3), so the third crossing falls before,
-// between or after a near-tie of the other two, and triangles cornered 2^-100
+// disagreed with brute force on 9,929 of 100,000 rays there. Here small
+// triangles fill the root's cube (its content box about [-0.9, 0.95]^3, not a
+// thin slab), so the third crossing falls before, between or after a near-tie
+// of the other two inside the root's interval, and triangles cornered 2^-100
 // from the centre point bring ties of all three.
 TEST_CASE("the one-ray octree walk reaches the octants between centre-plane crossings that round together",
           "[accel]") {
@@ -752,16 +753,19 @@ TEST_CASE("the one-ray octree walk reaches the octants between centre-plane cros
     float target[3];
     if (k % 2) {
       // A point on a leg along a centre plane, moved inside by up to 1e-5 of
-      // the other leg.
+      // the other leg's length (about 1e-6).
       const float* q = reflected(legged[rng() % legged.size()]);
+      // The leg along the plane runs from the first vertex to the third, the
+      // other from the first to the second, whichever coordinates were swapped.
       const int axis = q[0] == q[6] ? 0 : 1;  // the coordinate that stays +-d along the leg
-      const float* end = q + (axis == 0 ? 6 : 3);
+      const float* end = q + 6;
       const float s = u01(rng);
       for (int c = 0; c < 3; ++c) target[c] = q[c] + s * (end[c] - q[c]);
-      const float* across = q + (axis == 0 ? 3 : 6);
+      const float* across = q + 3;
       target[axis] = q[axis] + (across[axis] - q[axis]) * (u01(rng) * 1e-5f);
     } else {
-      // A point within 1e-5 of the legs from the right angle.
+      // A point within 1e-5 of the legs' lengths (about 1e-6) of the right
+      // angle, inside the triangle.
       const float* q = reflected(cornered[rng() % cornered.size()]);
       float a = u01(rng), b = u01(rng);
       if (a + b > 1) {
