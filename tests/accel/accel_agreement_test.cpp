@@ -13,6 +13,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <random>
 #include <sstream>
 
@@ -661,6 +662,22 @@ QueryRay rayFromAfar(const float target[3], float distance, std::mt19937_64& rng
   return QueryRay{o[0], o[1], o[2], 0, target[0] - o[0], target[1] - o[1], target[2] - o[2], INFINITY};
 }
 
+// Barycentric weights (a, b) of a point drawn uniformly over a triangle: a
+// draw past the diagonal a + b = 1 is folded back inside.
+std::pair<float, float> pointInTriangle(std::mt19937_64& rng, std::uniform_real_distribution<float>& u01) {
+  float a = u01(rng), b = u01(rng);
+  if (a + b > 1) {
+    a = 1 - a;
+    b = 1 - b;
+  }
+  return {a, b};
+}
+
+// The root cell of the octree built over `objects`.
+OctreeNodeGpu octreeRoot(const std::vector<ObjectGpu>& objects) {
+  return nodesOf<OctreeNodeGpu>(*buildAccel(AccelKind::Octree, objects))[0];
+}
+
 }  // namespace
 
 TEST_CASE("every structure answers as brute force on flat triangles 2^-100 either side of the octree's centre "
@@ -678,19 +695,14 @@ TEST_CASE("every structure answers as brute force on flat triangles 2^-100 eithe
   std::uniform_real_distribution<float> u01(0, 1);
   std::vector<ObjectGpu> objects = flatLayer(0x1p-100f, rng);
   addReflections(objects);
-  const std::unique_ptr<DeviceAccel> octree = buildAccel(AccelKind::Octree, objects);
-  const OctreeNodeGpu& root = reinterpret_cast<const OctreeNodeGpu*>(octree->nodes.data() + 2)[0];
+  const OctreeNodeGpu root = octreeRoot(objects);
   REQUIRE(root.child_mask != 0);
   REQUIRE(root.cz == 0.0f);
   std::normal_distribution<float> normal;
   std::vector<QueryRay> rays;
   for (int k = 0; k < 20000; ++k) {
     const float* p = objects[rng() % objects.size()].p;
-    float a = u01(rng), b = u01(rng);
-    if (a + b > 1) {
-      a = 1 - a;
-      b = 1 - b;
-    }
+    const auto [a, b] = pointInTriangle(rng, u01);
     float target[3];
     for (int c = 0; c < 3; ++c) target[c] = p[c] + a * (p[3 + c] - p[c]) + b * (p[6 + c] - p[c]);
     rays.push_back(rayFromAfar(target, 10, rng, normal));
@@ -742,8 +754,7 @@ TEST_CASE("the one-ray octree walk reaches the octants between centre-plane cros
   }
   const std::size_t half = objects.size();
   addReflections(objects);
-  const std::unique_ptr<DeviceAccel> octree = buildAccel(AccelKind::Octree, objects);
-  const OctreeNodeGpu& root = reinterpret_cast<const OctreeNodeGpu*>(octree->nodes.data() + 2)[0];
+  const OctreeNodeGpu root = octreeRoot(objects);
   REQUIRE(root.child_mask != 0);
   REQUIRE((root.cx == 0.0f && root.cy == 0.0f && root.cz == 0.0f));
   std::normal_distribution<float> normal;
@@ -767,11 +778,7 @@ TEST_CASE("the one-ray octree walk reaches the octants between centre-plane cros
       // A point within 1e-5 of the legs' lengths (about 1e-6) of the right
       // angle, inside the triangle.
       const float* q = reflected(cornered[rng() % cornered.size()]);
-      float a = u01(rng), b = u01(rng);
-      if (a + b > 1) {
-        a = 1 - a;
-        b = 1 - b;
-      }
+      const auto [a, b] = pointInTriangle(rng, u01);
       for (int c = 0; c < 3; ++c) target[c] = q[c] + 1e-5f * (a * (q[3 + c] - q[c]) + b * (q[6 + c] - q[c]));
     }
     rays.push_back(rayFromAfar(target, 10, rng, normal));

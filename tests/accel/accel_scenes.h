@@ -28,6 +28,13 @@ struct AccelScene {
 
 using prism_test::loadTestMesh;
 
+// A structure's nodes as the kernels read them: past the two header words
+// (the scene's box).
+template <typename T>
+const T* nodesOf(const DeviceAccel& a) {
+  return reinterpret_cast<const T*>(a.nodes.data() + 2);
+}
+
 inline ObjectGpu identityObject(int type, int material) {
   ObjectGpu g{};
   g.type = type;

@@ -29,11 +29,6 @@ using namespace prism::test;
 
 namespace {
 
-template <typename T>
-const T* nodesOf(const DeviceAccel& a) {
-  return reinterpret_cast<const T*>(a.nodes.data() + 2);
-}
-
 CellBox headerBox(const DeviceAccel& a) {
   return {{a.nodes[0].v[0], a.nodes[0].v[1], a.nodes[0].v[2]}, {a.nodes[1].v[0], a.nodes[1].v[1], a.nodes[1].v[2]}};
 }
