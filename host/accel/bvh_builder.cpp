@@ -180,12 +180,10 @@ class Bvh2Builder {
   // `all`: what every reference spans.
   std::vector<Node2> build(const RefExtent& all) {
     const int n = static_cast<int>(m_refs.size());
-    // Room for the most nodes n references can make (2n - 1), and the
-    // partition's scratch, both left untouched until used: a tree of leaves
-    // of about 11 references claims a fifth of that room, and initialising
-    // all of it took 50 ms at 1.1M references.
+    // Room for the most nodes n references can make (2n - 1), left
+    // untouched until used: a tree of leaves of about 11 references claims a
+    // fifth of it, and initialising all of it took 50 ms at 1.1M references.
     m_nodes.reset(new NodeRoom[std::max(1, 2 * n - 1)]);
-    m_scratch.resize(m_refs.size());
     m_next = 1;
     m_pool.run(Subtree{0, 0, n, 0, all},
                [this](const Subtree& t) { buildNode(t.index, t.begin, t.end, t.depth, t.extent); },
@@ -256,28 +254,27 @@ class Bvh2Builder {
 
   // Moves the references whose bin on `axis` lies before `split_bin` to the
   // front of [begin, end) and returns where the others start; bounds both sides
-  // on the way. Out of place and without branches on the references (a branch
-  // per reference mispredicts half the time): each is copied to the next free
-  // slot at the front or the back of the same range of m_scratch, then back.
+  // after. In place and without branches on the references (a branch per
+  // reference mispredicts half the time): each reference swaps with the first
+  // of those found going right so far, and the left side grows by one where it
+  // goes left (where it goes right, two of the right side trade places). Out of
+  // place through a scratch array and back, whole builds took a fifth longer
+  // (docs/accel.md, "The partition in place"): a second copy of every
+  // reference at every level, and at the root the scratch's first touch on
+  // one thread.
   int partition(int begin, int end, const BinMap& map, int axis, int split_bin, RefExtent* left, RefExtent* right) {
     PrimRef* refs = m_refs.data();
-    PrimRef* scratch = m_scratch.data();
-    int front = begin, back = end - 1;
+    int front = begin;
     for (int i = begin; i < end; ++i) {
-      const bool goes_left = map.bins(refs[i])[axis] < split_bin;
-      scratch[goes_left ? front : back] = refs[i];
+      const PrimRef ref = refs[i];
+      const bool goes_left = map.bins(ref)[axis] < split_bin;
+      refs[i] = refs[front];
+      refs[front] = ref;
       front += goes_left;
-      back -= !goes_left;
     }
     RefExtent l, r;
-    for (int i = begin; i < front; ++i) {
-      l.add(scratch[i]);
-      refs[i] = scratch[i];
-    }
-    for (int i = front; i < end; ++i) {
-      r.add(scratch[i]);
-      refs[i] = scratch[i];
-    }
+    for (int i = begin; i < front; ++i) l.add(refs[i]);
+    for (int i = front; i < end; ++i) r.add(refs[i]);
     *left = l;
     *right = r;
     return front;
@@ -335,7 +332,6 @@ class Bvh2Builder {
   }
 
   PrimRefs& m_refs;
-  PrimRefs m_scratch;  // the partition's, range for range as m_refs
   // A node still to build: its room, its references and what they span.
   struct Subtree {
     int index, begin, end, depth;
