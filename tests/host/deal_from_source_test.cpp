@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -88,5 +89,62 @@ TEST_CASE("dealUnits takes from a shared source: every unit once between the par
     }
     // The faster part took from the other's stretch.
     CHECK(here > units / 2);
+  }
+}
+
+// Three units, and a fourth counted in this part's stretch until take finds
+// none left: another part took it meanwhile, as SharedStretches may tell.
+class StretchTakenAtTheEnd : public UnitSource {
+ public:
+  std::optional<std::size_t> take() override {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_next == 3) {
+      m_dry = true;
+      return std::nullopt;
+    }
+    return m_next++;
+  }
+  bool exhausted() const override {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_dry;
+  }
+  double nextSamples() const override { return 100; }
+  double samplesLeft() const override {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_dry ? 0.0 : 100.0 * static_cast<double>(4 - m_next);
+  }
+  std::size_t expectedUnits() const override {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_dry ? m_next : 4;
+  }
+
+ private:
+  mutable std::mutex m_mutex;
+  std::size_t m_next = 0;
+  bool m_dry = false;
+};
+
+// With one device the last unit is reported while the fourth still counts, so
+// only a report after the source runs dry ends at the whole; with three the
+// order varies from run to run, and every order must end there.
+TEST_CASE("progress ends at its whole when another part takes the rest of this part's stretch after its last unit") {
+  const std::vector<std::uint64_t> samples(4, 100);
+  for (std::size_t device_count : {std::size_t(1), std::size_t(3)}) {
+    StretchTakenAtTheEnd source;
+    std::vector<DeviceShare> devices(device_count);
+    std::vector<double> paces;
+    std::size_t last_done = 0, last_whole = 0;
+    const DealResult dealt = dealUnits(
+        devices, samples, source, [](std::size_t, std::size_t) {},
+        [&](std::size_t done, std::size_t whole) {
+          last_done = done;
+          last_whole = whole;
+          return true;
+        },
+        paces);
+    INFO(device_count << " device(s)");
+    CHECK_FALSE(dealt.cancelled);
+    CHECK(last_done == 3);
+    CHECK(last_whole == 3);
   }
 }
