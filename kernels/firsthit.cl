@@ -36,6 +36,7 @@
 #include "sampling/film_bounds.h"
 
 #define FIRSTHIT_BLOCK 8 /* pixels per side of a raster block */
+#define FIRSTHIT_DIR_LANES 8 /* samples a work-item of firsthit_pixel_dirs (host: kFirstHitDirLanes) */
 
 /* Cells (pixels) are numbered block by block, 8x8 pixels each, row by row
  * inside a block, so the samples of a block lie together once sorted by cell:
@@ -88,12 +89,37 @@ __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global c
 /* Positions in pixel order, spp to a pixel (the per-pixel sampling modes:
  * sample g of the image lies in pixel g / spp): they need no sorting, since a
  * row of a block's pixels is already one run of samples. Slot k is the batch's
- * sample k; its direction is stored, its entry emptied. */
+ * sample k; its direction is stored, its entry emptied. A work-item takes
+ * FIRSTHIT_DIR_LANES samples, their directions in vector lanes: PoCL runs a
+ * work-group's items one after another without vectorising across them, and
+ * one at a time the directions' divisions and square roots were most of this
+ * kernel. A last, partial group, or a lane that needs the normalisation's
+ * scaling (never at a camera's own directions), goes one sample at a time. */
 __kernel void firsthit_pixel_dirs(__global const CameraGpu* camera, __global const float* xy, int in_xy, int count,
                                   __global float4* sorted, __global uint2* entries) {
-  int k = get_global_id(0);
-  if (k >= count) return;
-  firsthit_place(camera, xy[2 * (in_xy + k)], xy[2 * (in_xy + k) + 1], k, sorted, entries);
+  int first = get_global_id(0) * FIRSTHIT_DIR_LANES;
+  if (first >= count) return;
+  float8 dx, dy, dz;
+  if (first + FIRSTHIT_DIR_LANES <= count) {
+    /* Lane by lane rather than a vload16's .even and .odd, whose shuffle
+     * Oclgrind's check of uninitialised values takes for unset lanes. */
+    __global const float* q = xy + 2 * (in_xy + first);
+    float8 fx = (float8)(q[0], q[2], q[4], q[6], q[8], q[10], q[12], q[14]);
+    float8 fy = (float8)(q[1], q[3], q[5], q[7], q[9], q[11], q[13], q[15]);
+    if (camera_ray_dir8(camera, fx, fy, &dx, &dy, &dz)) {
+      float dxa[8], dya[8], dza[8];
+      vstore8(dx, 0, dxa);
+      vstore8(dy, 0, dya);
+      vstore8(dz, 0, dza);
+      for (int l = 0; l < FIRSTHIT_DIR_LANES; ++l) {
+        sorted[first + l] = (float4)(dxa[l], dya[l], dza[l], 0.0f);
+        entries[first + l] = (uint2)(0xffffffffu);
+      }
+      return;
+    }
+  }
+  for (int k = first; k < min(first + FIRSTHIT_DIR_LANES, count); ++k)
+    firsthit_place(camera, xy[2 * (in_xy + k)], xy[2 * (in_xy + k) + 1], k, sorted, entries);
 }
 
 /* The slots [begin, end) of the samples in pixels x0..x1 of film row y: in

@@ -11,6 +11,10 @@
 namespace prism {
 namespace {
 
+// Samples a work-item of firsthit_pixel_dirs (FIRSTHIT_DIR_LANES, the float8
+// lanes of camera_ray_dir8).
+constexpr size_t kFirstHitDirLanes = 8;
+
 template <typename T>
 void upload(Context& context, Buffer& b, const std::vector<T>& v) {
   b = Buffer(context, std::max<size_t>(1, v.size()) * sizeof(T));  // a buffer may not be empty
@@ -101,7 +105,15 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   m_sorted.reserve(m_context, count * 4 * sizeof(float));
   m_entries.reserve(m_context, count * 2 * sizeof(std::uint32_t));
   if (pixel_spp > 0) {
-    m_context.launch(m_pixel_dirs).arg(m_camera).arg(xy).arg(in_xy).arg(n).arg(m_sorted).arg(m_entries).run(count);
+    // Eight samples a work-item (kFirstHitDirLanes, as firsthit_pixel_dirs takes them).
+    m_context.launch(m_pixel_dirs)
+        .arg(m_camera)
+        .arg(xy)
+        .arg(in_xy)
+        .arg(n)
+        .arg(m_sorted)
+        .arg(m_entries)
+        .run((count + kFirstHitDirLanes - 1) / kFirstHitDirLanes);
   } else {
     m_slot_of.reserve(m_context, count * sizeof(std::int32_t));
     m_context.launch(m_count_cells).arg(m_camera).arg(xy).arg(in_xy).arg(n).arg(m_cell_count).run(count);

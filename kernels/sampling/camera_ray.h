@@ -16,6 +16,24 @@ inline float3 camera_ray_dir(__global const CameraGpu* camera, float fx, float f
   return sb_normalize(load3g(camera->forward) + x * load3g(camera->right) + y * load3g(camera->up));
 }
 
+/* camera_ray_dir of eight film positions, lane by lane the same operations in
+ * the same order (division and sqrt round correctly in vector lanes as in
+ * scalars, so the same bits); false, and nothing written, when a lane's
+ * squared length needs sb_normalize's scaling. */
+inline bool camera_ray_dir8(__global const CameraGpu* camera, float8 fx, float8 fy, float8* dx, float8* dy, float8* dz) {
+  float8 x = 2.0f * fx / (float)camera->width - 1.0f;
+  float8 y = 1.0f - 2.0f * fy / (float)camera->height;
+  float3 f = load3g(camera->forward), r = load3g(camera->right), u = load3g(camera->up);
+  float8 vx = f.x + x * r.x + y * u.x, vy = f.y + x * r.y + y * u.y, vz = f.z + x * r.z + y * u.z;
+  float8 d = vx * vx + vy * vy + vz * vz;
+  if (any8_t(!(d > 0x1p-100f && d < 0x1p100f))) return false;
+  float8 len = sqrt(d);
+  *dx = vx / len;
+  *dy = vy / len;
+  *dz = vz / len;
+  return true;
+}
+
 /* The ray of film position (fx, fy) for time sample u_time and lens sample
  * u_lens (both in [0, 1)): origin *o, unit direction *d, instant *time. */
 inline void camera_ray(__global const CameraGpu* camera, float fx, float fy, float u_time, float2 u_lens, float3* o,
