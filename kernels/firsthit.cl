@@ -36,6 +36,7 @@
 #include "sampling/film_bounds.h"
 
 #define FIRSTHIT_BLOCK 8 /* pixels per side of a raster block */
+#define FIRSTHIT_BOUND_LANES 8 /* primitives a work-item of firsthit_bound (host: kFirstHitBoundLanes) */
 #define FIRSTHIT_DIR_LANES 8 /* samples a work-item of firsthit_pixel_dirs (host: kFirstHitDirLanes) */
 
 /* Cells (pixels) are numbered block by block, 8x8 pixels each, row by row
@@ -160,35 +161,81 @@ inline int firsthit_blocks(int4 r) {
                    : (r.z / FIRSTHIT_BLOCK - r.x / FIRSTHIT_BLOCK + 1) * (r.w / FIRSTHIT_BLOCK - r.y / FIRSTHIT_BLOCK + 1);
 }
 
+/* An item's cells cut to the film rows row_first..row_last that hold the
+ * batch's samples (a batch in pixel order covers a band of the film; any
+ * other, all of it), and the blocks they span (0 when culled). */
+PRISM_HOT void firsthit_put_cells(const FilmProjector* c, const FilmHull* hull, int row_first, int row_last, int item,
+                                  __global int4* cells, __global int* block_count) {
+  int4 r = (int4)(0, 0, -1, -1);
+  int4 bounded;
+  if ((hull->front > 0 || hull->near > 0 || hull->behind > 0) &&
+      film_hull_cells(c, hull, &bounded) != FILM_BOUNDS_CULLED && bounded.y <= row_last && bounded.w >= row_first)
+    r = (int4)(bounded.x, max(bounded.y, row_first), bounded.z, min(bounded.w, row_last));
+  cells[item] = r;
+  block_count[item] = firsthit_blocks(r);
+}
+
 /* block_count[item]: the blocks its cells span (0 when culled); the host turns
- * them into pair_start by an exclusive scan. Cells are cut to the film rows
- * row_first..row_last that hold the batch's samples (a batch in pixel order
- * covers a band of the film; any other, all of it). */
+ * them into pair_start by an exclusive scan. Work-item g < groups bounds
+ * primitives 8g to 8g + 7, their projections in float8 lanes (PoCL runs
+ * work-items one after another, and one vertex at a time three divisions
+ * each were most of this kernel: a third of the pass at 1.1M triangles); a
+ * primitive that is not a plain triangle gets no cells here (it is bounded
+ * among the others, by its host box). Each work-item past them bounds one of
+ * the others. */
 __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS,
                              __global const int* other_prims, __global const float* other_boxes, int others,
                              int row_first, int row_last, __global int4* cells, __global int* block_count) {
   const Geometry g = GEOMETRY_INIT;
   const int prims = g.prim_count;
-  int item = get_global_id(0);
-  if (item >= prims + others) return;
+  const int groups = (prims + FIRSTHIT_BOUND_LANES - 1) / FIRSTHIT_BOUND_LANES;
+  int k = get_global_id(0);
+  if (k >= groups + others) return;
   FilmProjector c = film_projector(camera);
-  FilmHull hull = film_hull_empty();
-  int4 r = (int4)(0, 0, -1, -1);
-  if (item < prims) {
-    float3 v[3];
-    if (firsthit_plain_triangle(&g, item, &v[0], &v[1], &v[2]))
-      for (int i = 0; i < 3; ++i) film_hull_add(&c, v[i], &hull);
-  } else {
+  if (k >= groups) {
+    int item = prims + (k - groups);
+    FilmHull hull = film_hull_empty();
     __global const float* b = other_boxes + 6 * (item - prims);
     for (int i = 0; i < 8; ++i)
       film_hull_add(&c, (float3)(b[(i & 1) ? 3 : 0], b[(i & 2) ? 4 : 1], b[(i & 4) ? 5 : 2]), &hull);
+    firsthit_put_cells(&c, &hull, row_first, row_last, item, cells, block_count);
+    return;
   }
-  int4 bounded;
-  if ((hull.front > 0 || hull.near > 0 || hull.behind > 0) && film_hull_cells(&c, &hull, &bounded) != FILM_BOUNDS_CULLED &&
-      bounded.y <= row_last && bounded.w >= row_first)
-    r = (int4)(bounded.x, max(bounded.y, row_first), bounded.z, min(bounded.w, row_last));
-  cells[item] = r;
-  block_count[item] = firsthit_blocks(r);
+  int first = k * FIRSTHIT_BOUND_LANES;
+  float v[3][3][FIRSTHIT_BOUND_LANES];
+  int plain[FIRSTHIT_BOUND_LANES];
+  for (int l = 0; l < FIRSTHIT_BOUND_LANES; ++l) {
+    float3 p[3] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
+    plain[l] = first + l < prims && firsthit_plain_triangle(&g, first + l, &p[0], &p[1], &p[2]) ? -1 : 0;
+    for (int i = 0; i < 3; ++i) {
+      v[i][0][l] = p[i].x;
+      v[i][1][l] = p[i].y;
+      v[i][2][l] = p[i].z;
+    }
+  }
+  int8 in = vload8(0, plain);
+  int8 behind = (int8)(0), near = (int8)(0), front = (int8)(0);
+  float8 x0 = (float8)(INFINITY), y0 = (float8)(INFINITY), x1 = (float8)(-INFINITY), y1 = (float8)(-INFINITY);
+  for (int i = 0; i < 3; ++i)
+    film_hull_add8(&c, vload8(0, v[i][0]), vload8(0, v[i][1]), vload8(0, v[i][2]), in, &behind, &near, &front,
+                       &x0, &y0, &x1, &y1);
+  int ba[8], na[8], fa[8];
+  float x0a[8], y0a[8], x1a[8], y1a[8];
+  vstore8(behind, 0, ba);
+  vstore8(near, 0, na);
+  vstore8(front, 0, fa);
+  vstore8(x0, 0, x0a);
+  vstore8(y0, 0, y0a);
+  vstore8(x1, 0, x1a);
+  vstore8(y1, 0, y1a);
+  for (int l = 0; l < FIRSTHIT_BOUND_LANES && first + l < prims; ++l) {
+    FilmHull hull;
+    hull.box = (float4)(x0a[l], y0a[l], x1a[l], y1a[l]);
+    hull.behind = ba[l];
+    hull.near = na[l];
+    hull.front = fa[l];
+    firsthit_put_cells(&c, &hull, row_first, row_last, first + l, cells, block_count);
+  }
 }
 
 __kernel void firsthit_emit(int items, __global const int4* cells, __global const int* pair_start,

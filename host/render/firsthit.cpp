@@ -14,6 +14,9 @@ namespace {
 // Samples a work-item of firsthit_pixel_dirs (FIRSTHIT_DIR_LANES, the float8
 // lanes of camera_ray_dir8).
 constexpr size_t kFirstHitDirLanes = 8;
+// Primitives a work-item of firsthit_bound takes (FIRSTHIT_BOUND_LANES); the
+// other primitives' boxes one a work-item after them.
+constexpr size_t kFirstHitBoundLanes = 8;
 
 template <typename T>
 void upload(Context& context, Buffer& b, const std::vector<T>& v) {
@@ -151,7 +154,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
       .arg(static_cast<cl_int>(row_last))
       .arg(m_cells)
       .arg(m_block_count)
-      .run(items);
+      .run((m_prims + kFirstHitBoundLanes - 1) / kFirstHitBoundLanes + m_others);
   m_scan.exclusive(m_block_count, items, m_pair_start);
   std::int32_t total = 0;
   m_pair_start.read(&total, sizeof total, items * sizeof(std::int32_t));

@@ -82,6 +82,32 @@ PRISM_HOT void film_hull_add(const FilmProjector* c, float3 p, FilmHull* h) {
                     fmax(h->box.w, y + pad_y));
 }
 
+/* film_hull_add of one vertex in each of eight lanes (eight hulls: their
+ * counts and film boxes x0, y0, x1, y1 lane by lane), with its operations in
+ * the same order, so the same bounds; only the lanes of `in` count. */
+PRISM_HOT void film_hull_add8(const FilmProjector* c, float8 px, float8 py, float8 pz, int8 in, int8* behind,
+                              int8* near, int8* front, float8* x0, float8* y0, float8* x1, float8* y1) {
+  float8 vx = px - c->o.x, vy = py - c->o.y, vz = pz - c->o.z;
+  float8 len = fabs(vx) + fabs(vy) + fabs(vz);
+  float8 z = vx * c->f.x + vy * c->f.y + vz * c->f.z;
+  float8 tol = 1e-4f * len;
+  int8 ge = z >= -tol, lt = z < -tol, le = z <= tol; /* NaN: none of the three, so near */
+  int8 is_front = in & ge & ~le;
+  *behind -= in & lt; /* true is -1 */
+  *near -= in & ((~ge & ~lt) | (ge & le));
+  *front -= is_front;
+  float8 sx = (vx * c->r.x + vy * c->r.y + vz * c->r.z) / (c->rr * z);
+  float8 sy = (vx * c->u.x + vy * c->u.y + vz * c->u.z) / (c->uu * z);
+  float8 rel = 1e-6f * len / z;
+  float8 pad_x = 0.1f + 0.5f * c->w * rel * (fabs(sx) + c->r_len / c->rr);
+  float8 pad_y = 0.1f + 0.5f * c->h * rel * (fabs(sy) + c->u_len / c->uu);
+  float8 x = 0.5f * c->w * (1.0f + sx), y = 0.5f * c->h * (1.0f - sy);
+  *x0 = select(*x0, fmin(*x0, x - pad_x), is_front);
+  *y0 = select(*y0, fmin(*y0, y - pad_y), is_front);
+  *x1 = select(*x1, fmax(*x1, x + pad_x), is_front);
+  *y1 = select(*y1, fmax(*y1, y + pad_y), is_front);
+}
+
 /* The hull's verdict; for FILM_BOUNDS_FINITE, *cells is the inclusive rectangle of
  * film pixels (x0, y0, x1, y1) its bounds touch, clamped to the film. */
 PRISM_HOT int film_hull_cells(const FilmProjector* c, const FilmHull* h, int4* cells) {

@@ -238,6 +238,22 @@ TEST_CASE("first hits agree with traced rays when primitives cross the camera pl
   checkAgreement(scene, samplePoints(64, 48, 4, 3));
 }
 
+TEST_CASE("first hits agree with traced rays on triangles with a vertex on the camera plane", "[firsthit]") {
+  // Slivers from a point beside the camera (on its plane, within the film
+  // bounds' tolerance of it) to the view ahead, before a wall: the image of each
+  // runs off the film toward that vertex, beyond the bounds of the other two.
+  Scene scene = emptyScene({0, 0, 0}, {0.2, -0.1, -1}, 70, 64, 48);
+  TestRng rng{7};
+  const Vec3 forward = normalize(Vec3{0.2, -0.1, -1});
+  for (int k = 0; k < 40; ++k) {
+    Vec3 side = normalize(cross(rng.vec(-1, 1), forward)) * rng.in(0.3, 2);
+    Vec3 front = forward * rng.in(1.5, 4) + rng.vec(-1, 1);
+    scene.objects.push_back(triangle(side, front, front + rng.vec(-0.3, 0.3)));
+  }
+  scene.objects.push_back(box({-20, -20, -30}, {20, 20, -25}));
+  checkAgreement(scene, samplePoints(64, 48, 4, 3));
+}
+
 // The 3,851-triangle bunny filling the middle of an 80x60 film, a sphere beside it.
 static Scene bunnyAndSphere(int width = 80) {
   prism::SharedMesh bunny = prism_test::loadTestMesh("bunny/bun_zipper_res3.ply");
