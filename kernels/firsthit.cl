@@ -94,14 +94,15 @@ __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global c
  * FIRSTHIT_DIR_LANES samples, their directions in vector lanes: PoCL runs a
  * work-group's items one after another without vectorising across them, and
  * one at a time the directions' divisions and square roots were most of this
- * kernel. A last, partial group, or a lane that needs the normalisation's
- * scaling (never at a camera's own directions), goes one sample at a time. */
+ * kernel. A last, partial group, and a group with a lane that needs the
+ * normalisation's scaling (never at a camera's own directions), go one sample
+ * at a time. */
 __kernel void firsthit_pixel_dirs(__global const CameraGpu* camera, __global const float* xy, int in_xy, int count,
                                   __global float4* sorted, __global uint2* entries) {
   int first = get_global_id(0) * FIRSTHIT_DIR_LANES;
   if (first >= count) return;
   float8 dx, dy, dz;
-  if (first + FIRSTHIT_DIR_LANES <= count) {
+  if (count - first >= FIRSTHIT_DIR_LANES) {
     /* Lane by lane rather than a vload16's .even and .odd, whose shuffle
      * Oclgrind's check of uninitialised values takes for unset lanes. */
     __global const float* q = xy + 2 * (in_xy + first);
@@ -176,8 +177,8 @@ PRISM_HOT void firsthit_put_cells(const FilmProjector* c, const FilmHull* hull, 
 }
 
 /* block_count[item]: the blocks its cells span (0 when culled); the host turns
- * them into pair_start by an exclusive scan. Work-item g < groups bounds
- * primitives 8g to 8g + 7, their projections in float8 lanes (PoCL runs
+ * them into pair_start by an exclusive scan. Work-item k < groups bounds
+ * primitives 8k to 8k + 7, their projections in float8 lanes (PoCL runs
  * work-items one after another, and one vertex at a time three divisions
  * each were most of this kernel: a third of the pass at 1.1M triangles); a
  * primitive that is not a plain triangle gets no cells here (it is bounded
@@ -188,7 +189,7 @@ __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_P
                              int row_first, int row_last, __global int4* cells, __global int* block_count) {
   const Geometry g = GEOMETRY_INIT;
   const int prims = g.prim_count;
-  const int groups = (prims + FIRSTHIT_BOUND_LANES - 1) / FIRSTHIT_BOUND_LANES;
+  const int groups = prims / FIRSTHIT_BOUND_LANES + (prims % FIRSTHIT_BOUND_LANES != 0);
   int k = get_global_id(0);
   if (k >= groups + others) return;
   FilmProjector c = film_projector(camera);

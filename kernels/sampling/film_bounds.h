@@ -91,10 +91,15 @@ PRISM_HOT void film_hull_add8(const FilmProjector* c, float8 px, float8 py, floa
   float8 len = fabs(vx) + fabs(vy) + fabs(vz);
   float8 z = vx * c->f.x + vy * c->f.y + vz * c->f.z;
   float8 tol = 1e-4f * len;
-  int8 ge = z >= -tol, lt = z < -tol, le = z <= tol; /* NaN: none of the three, so near */
-  int8 is_front = in & ge & ~le;
-  *behind -= in & lt; /* true is -1 */
-  *near -= in & ((~ge & ~lt) | (ge & le));
+  /* film_hull_add's three cases as masks, without a bitwise not: Oclgrind
+   * 21.10 computes a not of a vector comparison wrongly in optimised builds.
+   * tol is at least 0 or NaN, so z > tol is film_hull_add's front; a NaN z or
+   * tol is near, as there. */
+  int8 behind_m = in & (z < -tol);
+  int8 near_m = in & (((z >= -tol) & (z <= tol)) | (z != z) | (tol != tol));
+  int8 is_front = in & (z > tol);
+  *behind -= behind_m; /* true is -1 */
+  *near -= near_m;
   *front -= is_front;
   float8 sx = (vx * c->r.x + vy * c->r.y + vz * c->r.z) / (c->rr * z);
   float8 sy = (vx * c->u.x + vy * c->u.y + vz * c->u.z) / (c->uu * z);
