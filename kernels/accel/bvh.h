@@ -225,11 +225,8 @@ PRISM_HOT float structure_transmittance(ACCEL_PARAMS, __global const MaterialGpu
     } else {
       int start, count;
       bvh_leaf_range(code, &start, &count);
-      for (int p = 0; p < count; ++p) {
-        carried =
-            packet_transmittance(accel_packets + start + p, &pr, o, d, tmin, tmax, carried, 0, geom, materials);
-        if (carried == 0.0f) return 0.0f;
-      }
+      carried = leaf_transmittance(accel_packets + start, count, &pr, o, d, tmin, tmax, carried, 0, geom, materials);
+      if (carried == 0.0f) return 0.0f;
     }
     if (sp == 0) break;
     code = stack[--sp];

@@ -30,10 +30,7 @@ PRISM_HOT bool cell_leaf_closest(const CellLeaf* leaf, __global const TriPacketG
 PRISM_HOT float cell_leaf_transmittance(const CellLeaf* leaf, __global const TriPacketGpu* packets, const PacketRay* pr,
                                         float3 o, float3 d, float tmin, float tmax, float carried, Mailbox* mailbox,
                                         const Geometry* geom, __global const MaterialGpu* materials) {
-  for (int p = 0; p < leaf->count && carried > 0.0f; ++p)
-    carried =
-        packet_transmittance(packets + leaf->start + p, pr, o, d, tmin, tmax, carried, mailbox, geom, materials);
-  return carried;
+  return leaf_transmittance(packets + leaf->start, leaf->count, pr, o, d, tmin, tmax, carried, mailbox, geom, materials);
 }
 
 #endif
