@@ -301,7 +301,9 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
  * a float8 costs the CPU's vector unit about what a float4 does). Only pairs
  * of still triangles; a pair with a moving packet or an object lane goes
  * packet by packet. Closest hits stay packet by packet: in pairs, random
- * rays ran 5-12% slower (docs/accel.md, "Leaves"). */
+ * rays ran 5-12% slower (docs/accel.md, "Leaves"). On a GPU, where a
+ * work-item's lanes run one after another, a pair costs what its two packets
+ * do, with more registers live: not measured there yet. */
 PRISM_HOT bool packet_pair_plain(__global const TriPacketGpu* pk) {
   if (packet_moves(pk) || packet_moves(pk + 1)) return false;
   return !any4_t((vload4(0, pk[0].prim) < -1) | (vload4(0, pk[1].prim) < -1));
@@ -312,16 +314,16 @@ PRISM_HOT bool packet_pair_plain(__global const TriPacketGpu* pk) {
  * int4), under -cl-opt-disable. */
 PRISM_HOT float8 pair8(float4 lo, float4 hi) { return (float8)(lo.x, lo.y, lo.z, lo.w, hi.x, hi.y, hi.z, hi.w); }
 
-/* The lanes of a pair's eight triangles met within (tmin, tmax):
- * packet_intersect's operations lane for lane, so the same answers. */
-PRISM_HOT int8 packet_pair_met(__global const TriPacketGpu* pk, float3 o, float3 d, float tmin, float tmax) {
+/* The lanes of a pair's eight triangles met within (tmin, tmax) by the
+ * ray r: packet_intersect's operations lane for lane, so the same answers. */
+PRISM_HOT int8 packet_pair_met(__global const TriPacketGpu* pk, const PacketRay* r, float tmin, float tmax) {
   __global const float4* a = (__global const float4*)pk;
   __global const float4* b = (__global const float4*)(pk + 1);
   float8 v0x = pair8(a[0], b[0]), v0y = pair8(a[1], b[1]), v0z = pair8(a[2], b[2]);
   float8 e1x = pair8(a[3], b[3]), e1y = pair8(a[4], b[4]), e1z = pair8(a[5], b[5]);
   float8 e2x = pair8(a[6], b[6]), e2y = pair8(a[7], b[7]), e2z = pair8(a[8], b[8]);
-  float8 ox = (float8)(o.x), oy = (float8)(o.y), oz = (float8)(o.z);
-  float8 dx = (float8)(d.x), dy = (float8)(d.y), dz = (float8)(d.z);
+  float8 ox = (float8)(r->ox.x), oy = (float8)(r->oy.x), oz = (float8)(r->oz.x);
+  float8 dx = (float8)(r->dx.x), dy = (float8)(r->dy.x), dz = (float8)(r->dz.x);
   MOLLER_TRUMBORE_LANES(float8, int8, tmin, tmax, 0);
   return hit;
 }
@@ -340,7 +342,7 @@ PRISM_HOT float leaf_transmittance(__global const TriPacketGpu* pk, int count, c
         carried = packet_transmittance(pk + p + 1, r, o, d, tmin, tmax, carried, mailbox, geom, materials);
       continue;
     }
-    int8 ok = packet_pair_met(pk + p, o, d, tmin, tmax);
+    int8 ok = packet_pair_met(pk + p, r, tmin, tmax);
     if (any8_t(ok)) {
       int oka[8];
       vstore8(ok, 0, oka);
