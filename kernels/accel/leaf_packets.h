@@ -167,6 +167,14 @@ PRISM_HOT bool packet_moves(__global const TriPacketGpu* pk) {
 #endif
 }
 
+/* Whether pk holds only still triangles (and empty lanes): what the tests
+ * that take a packet's triangles in vector lanes take whole; a packet with
+ * other kinds of objects, or moving, goes through packet_closest or
+ * packet_transmittance. */
+PRISM_HOT bool packet_still_triangles(__global const TriPacketGpu* pk) {
+  return !any4_t(vload4(0, pk->prim) < -1) && !packet_moves(pk);
+}
+
 PRISM_HOT void packet_closest(__global const TriPacketGpu* pk, const PacketRay* r, float3 o, float3 d, float tmin,
                               float* best, HitGpu* hit, const Geometry* geom) {
   float4 t, u, v;
@@ -296,19 +304,6 @@ PRISM_HOT float packet_transmittance(__global const TriPacketGpu* pk, const Pack
   return carried;
 }
 
-/* Shadow rays take a leaf's packets two at a time: packets p and p + 1 in
- * the low and high lanes of float8 (a leaf averages about three packets, and
- * a float8 costs the CPU's vector unit about what a float4 does). Only pairs
- * of still triangles; a pair with a moving packet or an object lane goes
- * packet by packet. Closest hits stay packet by packet: in pairs, random
- * rays ran 5-12% slower (docs/accel.md, "Leaves"). On a GPU, where a
- * work-item's lanes run one after another, a pair costs what its two packets
- * do, with more registers live: not measured there yet. */
-PRISM_HOT bool packet_pair_plain(__global const TriPacketGpu* pk) {
-  if (packet_moves(pk) || packet_moves(pk + 1)) return false;
-  return !any4_t((vload4(0, pk[0].prim) < -1) | (vload4(0, pk[1].prim) < -1));
-}
-
 /* Two float4 as one float8, lane by lane: Oclgrind 21.10 crashes on a
  * vector built of two halves, (float8)(float4, float4) or (int8)(int4,
  * int4), under -cl-opt-disable. */
@@ -328,15 +323,23 @@ PRISM_HOT int8 packet_pair_met(__global const TriPacketGpu* pk, const PacketRay*
   return hit;
 }
 
-/* What a leaf's `count` packets leave of `carried`, counting the hits in
- * the order packet by packet would count them (a product's bits depend on
- * the order of its factors, and the mailbox on the order of its ids). */
+/* What a leaf's `count` packets leave of `carried`. Shadow rays take the
+ * packets two at a time: packets p and p + 1 in the low and high lanes of
+ * float8 (a leaf averages about three packets, and a float8 costs the CPU's
+ * vector unit about what a float4 does). Only pairs of still triangles; a
+ * pair with a moving packet or an object lane goes packet by packet. The
+ * hits are counted in the order packet by packet would count them (a
+ * product's bits depend on the order of its factors, and the mailbox on the
+ * order of its ids). Closest hits stay packet by packet: in pairs, random
+ * rays ran 5-12% slower (docs/accel.md, "Leaves"). On a GPU, where a
+ * work-item's lanes run one after another, a pair costs what its two packets
+ * do, with more registers live: not measured there yet. */
 PRISM_HOT float leaf_transmittance(__global const TriPacketGpu* pk, int count, const PacketRay* r, float3 o,
                                    float3 d, float tmin, float tmax, float carried, Mailbox* mailbox,
                                    const Geometry* geom, __global const MaterialGpu* materials) {
   int p = 0;
   for (; p + 1 < count && carried > 0.0f; p += 2) {
-    if (!packet_pair_plain(pk + p)) {
+    if (!(packet_still_triangles(pk + p) && packet_still_triangles(pk + p + 1))) {
       carried = packet_transmittance(pk + p, r, o, d, tmin, tmax, carried, mailbox, geom, materials);
       if (carried > 0.0f)
         carried = packet_transmittance(pk + p + 1, r, o, d, tmin, tmax, carried, mailbox, geom, materials);

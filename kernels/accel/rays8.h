@@ -235,19 +235,13 @@ PRISM_HOT int8 rays8_triangle(__global const TriPacketGpu* pk, int k, const RayP
   return hit;
 }
 
-/* Whether leaf packet pk is tested ray by ray: it holds other kinds of
- * objects, or moving triangles (in object space). */
-PRISM_HOT bool rays8_one_by_one(__global const TriPacketGpu* pk) {
-  return any4_t(vload4(0, pk->prim) < -1) || packet_moves(pk);
-}
-
 /* Closest hits, leaf packet pk, in the lanes of `reach` (those whose own box
  * tests admit the leaf): triangles lane by lane against the eight rays, with
  * accel_accept's rule in every lane; other kinds of objects and moving
  * triangles ray by ray, through packet_closest. */
 PRISM_HOT void rays8_leaf_closest(__global const TriPacketGpu* pk, int8 reach, const RayLanes* r, RayPacket* p,
                                   const Geometry* geom) {
-  if (rays8_one_by_one(pk)) {
+  if (!packet_still_triangles(pk)) { /* tested ray by ray */
     int in[8];
     vstore8(reach, 0, in);
     RayHits8 hits;
@@ -295,7 +289,7 @@ PRISM_HOT void rays8_meet(int8 met, float k, RayPacket* p) {
  * 0 may be a product). */
 PRISM_HOT void rays8_leaf_transmittance(__global const TriPacketGpu* pk, int8 reach, const RayLanes* r,
                                         RayPacket* p, const Geometry* geom, __global const MaterialGpu* materials) {
-  if (rays8_one_by_one(pk)) {
+  if (!packet_still_triangles(pk)) { /* tested ray by ray */
     int in[8], alone[8];
     vstore8(reach & rays8_open(p), 0, in);
     for (int l = 0; l < PACKET_RAYS; ++l) {
