@@ -106,12 +106,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
         node = first;
         continue;
       }
-      for (int k = 0; k < n.payload; ++k) {
-        if (transmittance)
-          rays8_leaf_transmittance(accel_packets + (n.word >> 2) + k, live, r, p, geom, materials);
-        else
-          rays8_leaf_closest(accel_packets + (n.word >> 2) + k, live, r, p, geom);
-      }
+      rays8_leaf(accel_packets + (n.word >> 2), n.payload, live, r, p, geom, materials, transmittance);
     }
     if (sp == 0) break;
     --sp;

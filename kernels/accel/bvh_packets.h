@@ -95,12 +95,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
     } else {
       int start, count;
       bvh_leaf_range(code, &start, &count);
-      for (int k = 0; k < count; ++k) {
-        if (transmittance)
-          rays8_leaf_transmittance(accel_packets + start + k, reach, r, p, geom, materials);
-        else
-          rays8_leaf_closest(accel_packets + start + k, reach, r, p, geom);
-      }
+      rays8_leaf(accel_packets + start, count, reach, r, p, geom, materials, transmittance);
       if (!any8_t(rays8_open(p))) break;
     }
     float8 limit = p->best * ACCEL_FAR_SCALE;

@@ -67,12 +67,7 @@ PRISM_HOT void structure_packet_walk(ACCEL_PARAMS, __global const MaterialGpu* m
       }
       continue;
     }
-    for (int k = 0; k < n->packet_count; ++k) {
-      if (transmittance)
-        rays8_leaf_transmittance(accel_packets + n->first + k, reach, r, p, geom, materials);
-      else
-        rays8_leaf_closest(accel_packets + n->first + k, reach, r, p, geom);
-    }
+    rays8_leaf(accel_packets + n->first, n->packet_count, reach, r, p, geom, materials, transmittance);
     if (transmittance && !any8_t(rays8_open(p))) break;
   }
 }

@@ -309,7 +309,27 @@ PRISM_HOT void rays8_leaf_transmittance(__global const TriPacketGpu* pk, int8 re
     if (id < 0) continue;
     float8 t, u, v;
     int8 met = rays8_triangle(pk, lane, p, 0, &t, &u, &v) & reach;
-    if (any8_t(met)) rays8_meet(met, accel_transmit(materials, geom, id), p);
+    if (any8_t(met)) {
+      rays8_meet(met, accel_transmit(materials, geom, id), p);
+      reach &= rays8_open(p);
+      if (!any8_t(reach)) return;
+    }
+  }
+}
+
+/* A leaf's `count` packets from pk, in the lanes of `reach`. Transmittance
+ * stops once every lane of reach is settled: the leaf's later packets could
+ * only close a closed lane again. */
+PRISM_HOT void rays8_leaf(__global const TriPacketGpu* pk, int count, int8 reach, const RayLanes* r, RayPacket* p,
+                          const Geometry* geom, __global const MaterialGpu* materials, int transmittance) {
+  for (int k = 0; k < count; ++k) {
+    if (!transmittance) {
+      rays8_leaf_closest(pk + k, reach, r, p, geom);
+      continue;
+    }
+    rays8_leaf_transmittance(pk + k, reach, r, p, geom, materials);
+    reach &= rays8_open(p);
+    if (!any8_t(reach)) return;
   }
 }
 
