@@ -3,12 +3,17 @@
 #ifndef PRISM_COMMON_RNG_H
 #define PRISM_COMMON_RNG_H
 
-/* PCG-style integer hash (Jarzynski and Olano, "Hash Functions for GPU Rendering", 2020). */
-inline uint pcg_hash(uint v) {
-  uint state = v * 747796405u + 2891336453u;
-  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-  return (word >> 22u) ^ word;
-}
+/* PCG-style integer hash (Jarzynski and Olano, "Hash Functions for GPU
+ * Rendering", 2020): pcg_hash on one value, pcg_hash8 on eight in vector lanes
+ * (the same operations lane by lane; integer, so the same bits). */
+#define PCG_HASH_FUNCTION(name, U)                                    \
+  inline U name(U v) {                                                \
+    U state = v * 747796405u + 2891336453u;                           \
+    U word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u; \
+    return (word >> 22u) ^ word;                                      \
+  }
+PCG_HASH_FUNCTION(pcg_hash, uint)
+PCG_HASH_FUNCTION(pcg_hash8, uint8)
 
 /* Uniform float in [0, 1) from 24 random bits. */
 inline float rng_uniform(uint seed, uint pixel, uint sample, uint dimension) {

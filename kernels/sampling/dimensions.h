@@ -28,9 +28,28 @@ inline float2 ray_sample_2d(uint seed, int strata, int strata_id, int sample, in
   return sample_2d(seed, (uint)strata_id, sample * subs + sub, strata * subs, dim);
 }
 
+/* ray_sample_2d for eight rays' samples in vector lanes (sampler_point8): the
+ * same points, lane by lane, in *x and *y. */
+inline void ray_sample_2d8(uint seed, int strata, int8 strata_id, int8 sample, int8 dim, int8 sub, int8 subs,
+                           float8* x, float8* y) {
+  if (strata <= 0)
+    sampler_point8(seed, pcg_hash8(as_uint8(strata_id) ^ pcg_hash8(as_uint8(sample * subs + sub))), (int8)(0),
+                   (int8)(1), dim, x, y);
+  else
+    sampler_point8(seed, as_uint8(strata_id), sample * subs + sub, (int8)(strata) * subs, dim, x, y);
+}
+
 inline float ray_sample_1d(uint seed, int strata, int strata_id, int sample, int dim) {
   if (strata <= 0) return sample_1d(seed, pcg_hash((uint)strata_id ^ pcg_hash((uint)sample)), 0, 1, dim);
   return sample_1d(seed, (uint)strata_id, sample, strata, dim);
+}
+
+/* ray_sample_1d for eight rays' samples in vector lanes (sampler_value8). */
+inline float8 ray_sample_1d8(uint seed, int strata, int8 strata_id, int8 sample, int dim) {
+  if (strata <= 0)
+    return sampler_value8(seed, pcg_hash8(as_uint8(strata_id) ^ pcg_hash8(as_uint8(sample))), (int8)(0), (int8)(1),
+                          (int8)(dim));
+  return sampler_value8(seed, as_uint8(strata_id), sample, (int8)(strata), (int8)(dim));
 }
 
 #endif
