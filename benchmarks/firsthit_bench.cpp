@@ -289,7 +289,7 @@ std::vector<FirstHitRow> runFirstHitBench(const FirstHitBenchOptions& options) {
         .arg(static_cast<cl_int>(count))
         .arg(static_cast<cl_int>(0))  // a pinhole
         .arg(rays)
-        .run(count);
+        .run((count + kGenerateLanes - 1) / kGenerateLanes);
     std::vector<RayGpu> primary = rays.readVector<RayGpu>(count);
     RayQueryEngine engine(context, SceneGeometry(gpu), AccelKind::Bvh);
     row.build_seconds = engine.accel().stats.build_seconds;

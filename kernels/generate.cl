@@ -14,30 +14,52 @@
 #include "sampling/dimensions.h"
 #include "shading/ray_io.h"
 
+#define GENERATE_LANES 8 /* samples a work-item takes (host: kGenerateLanes, render/sampler.h) */
+
+/* A work-item takes GENERATE_LANES samples and, for a distributed camera,
+ * draws their instants and lens points in vector lanes (ray_sample_1d8,
+ * ray_sample_2d8): one sample at a time, the sampler's chains of dependent
+ * multiplies were most of this kernel's time (PoCL runs a work-group's items
+ * one after another without vectorising across them). */
 __kernel void generate(__global const CameraGpu* camera, __global const float* xy, __global const int* aov_pixel,
                        int first_key, int spp, long group_base, int strata, int count, int distributed,
                        __global RayGpu* rays) {
-  int k = get_global_id(0);
-  if (k >= count) return;
-  int key = first_key + k;
-  int sample = key % spp;
-  int group = (int)((group_base + (long)key) / (long)spp);
-  float3 o, d;
-  float time;
+  int first = get_global_id(0) * GENERATE_LANES;
+  if (first >= count) return;
+  int lanes = min(GENERATE_LANES, count - first);
+  int sample[GENERATE_LANES], group[GENERATE_LANES];
+  for (int l = 0; l < GENERATE_LANES; ++l) { /* lanes past the launch repeat its last sample */
+    int key = first_key + first + min(l, lanes - 1);
+    sample[l] = key % spp;
+    group[l] = (int)((group_base + (long)key) / (long)spp);
+  }
+  float u_time[GENERATE_LANES], lens_x[GENERATE_LANES], lens_y[GENERATE_LANES];
   if (distributed) {
     uint seed = (uint)camera->seed;
-    float u_time = ray_sample_1d(seed, strata, group, sample, DIM_TIME);
-    float2 u_lens = ray_sample_2d(seed, strata, group, sample, DIM_LENS, 0, 1);
-    camera_ray(camera, xy[2 * k], xy[2 * k + 1], u_time, u_lens, &o, &d, &time);
-  } else {
-    o = load3g(camera->origin);
-    d = camera_ray_dir(camera, xy[2 * k], xy[2 * k + 1]);
-    time = camera->shutter_open;
+    int8 group8 = vload8(0, group), sample8 = vload8(0, sample);
+    float8 lx, ly;
+    ray_sample_2d8(seed, strata, group8, sample8, (int8)(DIM_LENS), (int8)(0), (int8)(1), &lx, &ly);
+    vstore8(ray_sample_1d8(seed, strata, group8, sample8, DIM_TIME), 0, u_time);
+    vstore8(lx, 0, lens_x);
+    vstore8(ly, 0, lens_y);
   }
-  RayGpu r = ray_make(o, d, 0.0f, PRISM_INF, (float3)(1.0f, 1.0f, 1.0f), key, 0, RAY_KIND_PRIMARY, sample);
-  r.aov_pixel = aov_pixel[k];
-  r.time = time;
-  r.dim = DIM_FIRST_HIT;
-  r.strata_id = group;
-  rays[k] = r;
+  for (int l = 0; l < lanes; ++l) {
+    int k = first + l;
+    float3 o, d;
+    float time;
+    if (distributed) {
+      camera_ray(camera, xy[2 * k], xy[2 * k + 1], u_time[l], (float2)(lens_x[l], lens_y[l]), &o, &d, &time);
+    } else {
+      o = load3g(camera->origin);
+      d = camera_ray_dir(camera, xy[2 * k], xy[2 * k + 1]);
+      time = camera->shutter_open;
+    }
+    RayGpu r = ray_make(o, d, 0.0f, PRISM_INF, (float3)(1.0f, 1.0f, 1.0f), first_key + k, 0, RAY_KIND_PRIMARY,
+                        sample[l]);
+    r.aov_pixel = aov_pixel[k];
+    r.time = time;
+    r.dim = DIM_FIRST_HIT;
+    r.strata_id = group[l];
+    rays[k] = r;
+  }
 }

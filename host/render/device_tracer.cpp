@@ -16,6 +16,7 @@ namespace prism {
 namespace {
 
 constexpr int kCompactBlock = 256;  // slots counted by one work-item of count_rays
+constexpr size_t kSpawnLanes = 8;     // slots a work-item of spawn_shadows takes (SPAWN_LANES)
 
 int compactBlocks(size_t slots) { return static_cast<int>((slots + kCompactBlock - 1) / kCompactBlock); }
 
@@ -387,7 +388,7 @@ void DeviceTracer::traceChunk(int first_key, size_t n) {
       .arg(static_cast<cl_int>(n))
       .arg(static_cast<cl_int>(m_distributed_camera ? 1 : 0))
       .arg(m_work)
-      .run(n);
+      .run((n + kGenerateLanes - 1) / kGenerateLanes);
   m_stats->rays_by_kind[RAY_KIND_PRIMARY] += n;
   m_stats->waves = std::max(m_stats->waves, 1);
   if (m_zbuffer) m_firsthit->resolve(m_geometry, m_zbuffer_first, n, m_hits);
@@ -478,7 +479,7 @@ void DeviceTracer::traceShadows(size_t surfaces) {
         .arg(static_cast<cl_int>(m_strata))
         .arg(m_shadows)
         .arg(m_shadow_tags)
-        .run(slots);
+        .run((slots + kSpawnLanes - 1) / kSpawnLanes);
     const size_t live = compact(m_shadows, m_shadow_tags, slots, m_shadow_queue, m_stats->rays_by_kind);
     if (live == 0) continue;
     // A shaded point's feelers are neighbours in the queue, and alike.

@@ -4,6 +4,7 @@
 // it can run without the renderer. docs/sampling.md describes the modes.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -17,6 +18,9 @@ namespace prism {
 // The program that holds the render loop's small kernels, supersample and
 // resolve among them (kernels/render_loop.cl): one build instead of six.
 constexpr const char* kRenderLoopProgram = "render_loop.cl";
+// Samples a work-item of its generate kernel takes (GENERATE_LANES): launch
+// (count + kGenerateLanes - 1) / kGenerateLanes work-items for count samples.
+constexpr std::size_t kGenerateLanes = 8;
 
 // Support radius in pixels: box 0.5, tent 1, gaussian 1.5, mitchell 2.
 double filterRadius(FilterKind kind);
