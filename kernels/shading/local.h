@@ -15,6 +15,11 @@ inline float3 local_light_term(__global const MaterialGpu* m, float3 kd, float3 
   float n_dot_l = sb_dot(n, l);
   if (m->model == SHADING_COOK_TORRANCE)
     return kd * n_dot_l + load3g(m->specular) * cook_torrance(n, l, v, m->roughness, m->distribution, m->ior);
+  float3 ks = load3g(m->specular);
+  /* Without a highlight, the power (most of this function's time) is not
+   * needed: ks * spec is then a zero of ks's sign, as ks * 0 is, spec being
+   * finite and not negative. */
+  if (ks.x == 0.0f && ks.y == 0.0f && ks.z == 0.0f) return kd * n_dot_l + ks * 0.0f;
   float spec_base;
   if (m->model == SHADING_BLINN) {
     spec_base = sb_dot(n, sb_normalize(l + v));
@@ -22,7 +27,7 @@ inline float3 local_light_term(__global const MaterialGpu* m, float3 kd, float3 
     spec_base = sb_dot(reflect_dir(-l, n), v);
   }
   float spec = spec_base > 0.0f ? pow_positive(spec_base, m->shininess) : 0.0f;
-  return kd * n_dot_l + load3g(m->specular) * spec;
+  return kd * n_dot_l + ks * spec;
 }
 
 #endif
