@@ -250,20 +250,22 @@ DealResult dealUnits(std::vector<DeviceShare>& devices, const std::vector<std::u
   {
     std::unique_lock<std::mutex> lock(mutex);
     std::size_t reported = 0;
-    while (working > 0) {
+    // Units finished and not yet reported are reported even when every worker
+    // has already ended: the workers may finish the whole frame before this
+    // thread first takes the lock, and progress must still hear of it.
+    for (;;) {
       changed.wait(lock, [&] { return working == 0 || (finished > reported && !stop); });
-      if (finished > reported && !stop) {
-        reported = finished;
-        if (progress) {
-          const std::size_t done = finished, whole = expected(done);
-          lock.unlock();
-          const bool go_on = report(done, whole);
-          lock.lock();
-          if (!go_on) {
-            stop = true;
-            result.cancelled = true;
-            changed.notify_all();
-          }
+      if (!(finished > reported && !stop)) break;  // every worker has ended
+      reported = finished;
+      if (progress) {
+        const std::size_t done = finished, whole = expected(done);
+        lock.unlock();
+        const bool go_on = report(done, whole);
+        lock.lock();
+        if (!go_on) {
+          stop = true;
+          result.cancelled = true;
+          changed.notify_all();
         }
       }
     }
