@@ -61,11 +61,11 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
   if (first >= count) return;
   int lanes = min(SPAWN_LANES, count - first);
   /* Lanes past the launch's slots or at an empty point draw a sample no feeler uses. */
-  int point[SPAWN_LANES], light[SPAWN_LANES], strata_id[SPAWN_LANES], sample[SPAWN_LANES], dim[SPAWN_LANES],
+  int surface[SPAWN_LANES], light_of[SPAWN_LANES], strata_id[SPAWN_LANES], sample[SPAWN_LANES], dim[SPAWN_LANES],
       sub[SPAWN_LANES], subs[SPAWN_LANES];
   for (int i = 0; i < SPAWN_LANES; ++i) {
-    point[i] = -1;
-    light[i] = strata_id[i] = sample[i] = dim[i] = sub[i] = 0;
+    surface[i] = -1;
+    light_of[i] = strata_id[i] = sample[i] = dim[i] = sub[i] = 0;
     subs[i] = 1;
     if (i >= lanes) continue;
     long slot = first_slot + first + i;
@@ -74,8 +74,8 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
     tags[first + i] = SLOT_TAG(RAY_KIND_NONE, 0);
     if (surfaces[k].material < 0) continue;
     int l = spawn_light(lights, light_count, &r);
-    point[i] = k;
-    light[i] = l;
+    surface[i] = k;
+    light_of[i] = l;
     strata_id[i] = surfaces[k].strata_id;
     sample[i] = surfaces[k].sample;
     dim[i] = surfaces[k].dim + DIM_FIRST_LIGHT + l;
@@ -91,12 +91,12 @@ __kernel void spawn_shadows(__global const SurfaceGpu* surfaces, long first_slot
   vstore8(uy8, 0, uy);
 #endif
   for (int i = 0; i < lanes; ++i) {
-    if (point[i] < 0) continue;
+    if (surface[i] < 0) continue;
 #ifdef PRISM_AREA_LIGHTS
     float2 u = (float2)(ux[i], uy[i]);
 #else
     float2 u = (float2)(0.0f, 0.0f);
 #endif
-    spawn_feeler(&surfaces[point[i]], materials, &lights[light[i]], u, first + i, shadows, tags);
+    spawn_feeler(&surfaces[surface[i]], materials, &lights[light_of[i]], u, first + i, shadows, tags);
   }
 }

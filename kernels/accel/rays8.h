@@ -318,8 +318,8 @@ PRISM_HOT void rays8_leaf_transmittance(__global const TriPacketGpu* pk, int8 re
 }
 
 /* A leaf's `count` packets from pk, in the lanes of `reach`. Transmittance
- * stops once every lane of reach is settled: the leaf's later packets could
- * only close a closed lane again. */
+ * stops once every lane of reach is settled: the leaf's later packets cannot
+ * change a closed lane (no t lies below its far end, RAYS8_CLOSED). */
 PRISM_HOT void rays8_leaf(__global const TriPacketGpu* pk, int count, int8 reach, const RayLanes* r, RayPacket* p,
                           const Geometry* geom, __global const MaterialGpu* materials, int transmittance) {
   for (int k = 0; k < count; ++k) {

@@ -15,9 +15,11 @@
 
 /* The pieces of the sampler, for one value (S empty: U uint, I int, F float)
  * or for eight in vector lanes (S 8: uint8, int8, float8), with the same
- * operations lane by lane, so the same bits: integer operations are exact, and
- * the float ones are conversions of small integers, divisions (correctly
- * rounded, as prism asks of every device that offers it) and one compare.
+ * operations lane by lane, so the same bits: integer operations are exact; the
+ * float ones are conversions of integers to float (rounded to nearest, as
+ * OpenCL fixes them), one square root whose result only seeds an integer that
+ * exact integer tests then correct, divisions (correctly rounded, as prism asks
+ * of every device that offers it) and one compare.
  *   sampler_mask: all bits below len's highest set;
  *   sampler_round: one round of Kensler's bijective hash on [0, mask];
  *   sampler_jitter: uniform in [0, 1) from 24 bits of a hash of (i, key);

@@ -18,7 +18,8 @@ inline float3 local_light_term(__global const MaterialGpu* m, float3 kd, float3 
   float3 ks = load3g(m->specular);
   /* Without a highlight, the power (most of this function's time) is not
    * needed: ks * spec is then a zero of ks's sign, as ks * 0 is, spec being
-   * finite and not negative. */
+   * finite and not negative (spec_base is a cosine of unit vectors, at most 1
+   * and a few ulps, and the scene loader keeps shininess within 0..1e6). */
   if (ks.x == 0.0f && ks.y == 0.0f && ks.z == 0.0f) return kd * n_dot_l + ks * 0.0f;
   float spec_base;
   if (m->model == SHADING_BLINN) {

@@ -6,8 +6,11 @@
 // vector), in both the stratified and the independent (strata <= 0) modes.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -46,6 +49,13 @@ __kernel void sampler_lanes_probe(__global const uint* seed, __global const int*
     lanes[3 * (8 * k + l) + 2] = vs[l];
   }
 }
+/* sampler_unit against sampler_unit8 on the same eight values. */
+__kernel void unit_probe(__global const float* x, int items, __global float* one, __global float* lanes) {
+  int k = get_global_id(0);
+  if (k >= items) return;
+  for (int l = 0; l < 8; ++l) one[8 * k + l] = sampler_unit(x[8 * k + l]);
+  vstore8(sampler_unit8(vload8(k, x)), k, lanes);
+}
 )";
 
 std::uint32_t bits(float f) {
@@ -64,14 +74,31 @@ TEST_CASE("the sampler in eight lanes gives ray_sample_2d's and ray_sample_1d's 
       subs(8 * items);
   for (int k = 0; k < items; ++k) {
     seed[k] = gen();
-    // Every eighth item independent (aa mode random); the others 1 to 64 strata.
-    strata[k] = k % 8 == 7 ? -static_cast<int>(gen() % 2) : 1 + static_cast<int>(gen() % 64);
+    // Every eighth item independent (aa mode random); others sample counts
+    // where the grid's side may need its corrections (a square, or one or two
+    // less, up to 2^31 - 1, with one sample a lane), counts past 2^24 (not exact in
+    // float), and the common case, 1 to 64 strata of 0 to 16 samples.
+    const int kind = k % 8;
+    bool one_sub = false;
+    if (kind == 7) {
+      strata[k] = -static_cast<int>(gen() % 2);
+    } else if (kind == 3) {
+      const std::int64_t side = k == 3 ? 46341 : 3000 + static_cast<std::int64_t>(gen() % 43340);
+      strata[k] = static_cast<std::int32_t>(
+          std::min<std::int64_t>(side * side - static_cast<std::int64_t>(gen() % 3), 2147483647));
+      one_sub = true;
+    } else if (kind == 5) {
+      strata[k] = (1 << 24) + 1 + static_cast<int>(gen() % 1000);
+      one_sub = true;
+    } else {
+      strata[k] = 1 + static_cast<int>(gen() % 64);
+    }
     for (int l = 0; l < 8; ++l) {
       const int i = 8 * k + l;
       strata_id[i] = static_cast<std::int32_t>(gen());
-      subs[i] = static_cast<int>(gen() % 17);  // 0: a point light's (no samples)
+      subs[i] = one_sub ? 1 : static_cast<int>(gen() % 17);  // 0: a point light's (no samples)
       sub[i] = subs[i] > 0 ? static_cast<int>(gen() % subs[i]) : 0;
-      sample[i] = static_cast<int>(gen() % 1024);
+      sample[i] = one_sub ? static_cast<int>(gen() % 2147483647u) : static_cast<int>(gen() % 1024);
       dim[i] = static_cast<int>(gen() % 40);
     }
   }
@@ -115,4 +142,27 @@ TEST_CASE("the sampler in eight lanes gives ray_sample_2d's and ray_sample_1d's 
   // The points are the sampler's, in [0, 1): not all one value.
   CHECK(inside == 24 * items);
   CHECK(one[0] != one[3]);
+}
+
+TEST_CASE("sampler_unit8 clamps as sampler_unit does, at 1 and past it, infinities and NaN too", "[kernels][sampling]") {
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> x = {0.0f, -0.0f, 0.5f, std::nextafter(1.0f, 0.0f), 1.0f, std::nextafter(1.0f, 2.0f),
+                                2.0f, inf, -inf, nan, -nan, -1.0f, 1e-45f, 0.99999f, 3e38f, -3e38f};
+  Context& ctx = test::sharedContext();
+  cl_kernel kernel = ctx.kernelFromText(kProbe, "sampler_lanes_probe.cl", "unit_probe", "");
+  const int items = static_cast<int>(x.size() / 8);
+  Buffer xb(ctx, x.size() * sizeof(float)), one_b(ctx, x.size() * sizeof(float)), lanes_b(ctx, x.size() * sizeof(float));
+  xb.writeVector(x);
+  ctx.launch(kernel).arg(xb).arg(static_cast<cl_int>(items)).arg(one_b).arg(lanes_b).run(items);
+  const std::vector<float> one = one_b.readVector<float>(x.size());
+  const std::vector<float> lanes = lanes_b.readVector<float>(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    INFO("x " << x[i] << " one " << one[i] << " lanes " << lanes[i]);
+    CHECK(bits(one[i]) == bits(lanes[i]));
+    // Below 1 stays; 1, above it and NaN become the float just below 1.
+    if (x[i] < 1.0f)
+      CHECK(bits(one[i]) == bits(x[i]));
+    else
+      CHECK(one[i] == std::nextafter(1.0f, 0.0f));
+  }
 }
