@@ -26,7 +26,7 @@ inline int spawn_light(__global const LightGpu* lights, int light_count, int* r)
   return l;
 }
 
-/* Slot j's feeler from point s toward light l, through its sample u of the light. */
+/* Slot j's feeler from point s toward `light`, through its sample u of the light. */
 inline void spawn_feeler(__global const SurfaceGpu* s, __global const MaterialGpu* materials,
                          __global const LightGpu* light, float2 u, int j, __global RayGpu* shadows,
                          __global int* tags) {

@@ -121,11 +121,12 @@ SAMPLER_POINTS(, uint, int, float)
 SAMPLER_POINTS(8, uint8, int8, float8)
 
 /* A point in [0, 1)^2: sample `sample` of `count`, in dimension `dim` of group
- * `group`. The sampler's hashes are long chains of dependent multiplies; where
- * a work-item has several points to draw, it draws eight at once in
- * vector lanes (sampler_point8), the same bits as eight calls here in less time than two
- * (PoCL runs a work-group's items one after another, without vectorising across
- * them, so one point at a time waits on every link of every chain). */
+ * `group`. The sampler's hashes are long chains of dependent multiplies, and
+ * PoCL runs a work-group's items one after another without vectorising across
+ * them, so one point at a time waits on every link of every chain; a work-item
+ * with several points to draw draws eight at once in vector lanes
+ * (sampler_point8), the same bits as eight calls here (docs/architecture.md,
+ * step 4, has what that saved). */
 inline float2 sample_2d(uint seed, uint group, int sample, int count, int dim) {
   float x, y;
   sampler_point(seed, group, sample, count, dim, &x, &y);
