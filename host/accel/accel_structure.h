@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/leaf_packets.h"
 #include "kernels/shared/object_gpu.h"
 #include "kernels/shared/tri_packet_gpu.h"
 
@@ -69,7 +70,7 @@ struct DeviceAccel {
   // Words 0 and 1: the scene box of the bounded primitives (lo xyz, hi xyz);
   // from word 2: the structure's nodes (BvhNodeGpu, OctreeNodeGpu, BspNodeGpu).
   std::vector<AccelWord> nodes;
-  std::vector<TriPacketGpu> packets;       // leaf contents
+  PacketVector packets;                    // leaf contents
   std::vector<std::int32_t> unbounded;     // object indices tested by every ray
   AccelStats stats;
 };

@@ -21,6 +21,7 @@
 #include "accel/kdop_bounds.h"
 #include "accel/leaf_packets.h"
 #include "accel/task_group.h"
+#include "accel/uninitialised_vector.h"
 #include "kernels/shared/bvh_node_gpu.h"
 
 namespace prism {
@@ -44,27 +45,8 @@ struct PrimRef {
 };
 static_assert(sizeof(PrimRef) == 32 && offsetof(PrimRef, hi) == 16, "PrimRef is read as two Float4 words");
 
-// Whose resize leaves the new elements unwritten: the references are written
-// on several threads, and zeroing them first would touch every page on one.
-template <typename T>
-struct UninitialisedAllocator : std::allocator<T> {
-  template <typename U>
-  struct rebind {
-    using other = UninitialisedAllocator<U>;
-  };
-  UninitialisedAllocator() = default;
-  template <typename U>
-  UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
-  template <typename U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-using PrimRefs = std::vector<PrimRef, UninitialisedAllocator<PrimRef>>;
+// Written on several threads, each its own run (uninitialised_vector.h).
+using PrimRefs = UninitialisedVector<PrimRef>;
 
 struct Node2 {
   Aabb box;
@@ -72,6 +54,7 @@ struct Node2 {
   std::int32_t right = -1;
   std::int32_t first = 0, count = 0;
 };
+using Nodes2 = UninitialisedVector<Node2>;
 
 double blocks(int n) { return static_cast<double>((n + PACKET_LANES - 1) / PACKET_LANES); }
 
@@ -180,20 +163,18 @@ class Bvh2Builder {
   Bvh2Builder(PrimRefs& refs, ThreadBudget& budget) : m_refs(refs), m_pool(budget) {}
 
   // `all`: what every reference spans.
-  std::vector<Node2> build(const RefExtent& all) {
+  Nodes2 build(const RefExtent& all) {
     const int n = static_cast<int>(m_refs.size());
     // Room for the most nodes n references can make (2n - 1), left
     // untouched until used: a tree of leaves of about 11 references claims a
     // fifth of it, and initialising all of it took 50 ms at 1.1M references.
-    m_nodes.reset(new NodeRoom[std::max(1, 2 * n - 1)]);
+    m_nodes.resize(std::max(1, 2 * n - 1));
     m_next = 1;
     m_pool.run(Subtree{0, 0, n, 0, all},
                [this](const Subtree& t) { buildNode(t.index, t.begin, t.end, t.depth, t.extent); },
                n >= 2 * kParallelPrims);
-    std::vector<Node2> nodes;
-    nodes.reserve(m_next.load());
-    for (int i = 0; i < m_next.load(); ++i) nodes.push_back(*node(i));
-    return nodes;
+    m_nodes.resize(m_next.load());  // the tree in place, its unused room never touched
+    return std::move(m_nodes);
   }
 
  private:
@@ -205,10 +186,8 @@ class Bvh2Builder {
     node.count = end - begin;
   }
 
-  Node2* node(int index) { return std::launder(reinterpret_cast<Node2*>(&m_nodes[index])); }
-
   void buildNode(int index, int begin, int end, int depth, const RefExtent& extent) {
-    Node2& node = *new (&m_nodes[index]) Node2;
+    Node2& node = m_nodes[index] = Node2{};
     const int n = end - begin;
     node.box = extent.box.aabb();
     if (n <= 1) return makeLeaf(node, begin, end);
@@ -340,11 +319,7 @@ class Bvh2Builder {
     RefExtent extent;
   };
   TaskPool<Subtree> m_pool;
-  // Node i is constructed in room i when buildNode claims it.
-  struct NodeRoom {
-    alignas(Node2) unsigned char bytes[sizeof(Node2)];
-  };
-  std::unique_ptr<NodeRoom[]> m_nodes;
+  Nodes2 m_nodes;  // node i written when buildNode claims it
   std::atomic<int> m_next{1};
 };
 
@@ -358,7 +333,7 @@ struct MotionBoxes {
 // Visits every binary node children first: leaf(node) for a leaf, then for an
 // inner node join(node, child) for each of its two children.
 template <typename Leaf, typename Join>
-void childrenFirst(const std::vector<Node2>& nodes, Leaf leaf, Join join) {
+void childrenFirst(const Nodes2& nodes, Leaf leaf, Join join) {
   std::vector<std::pair<int, bool>> todo{{0, false}};
   while (!todo.empty()) {
     auto [node, children_done] = todo.back();
@@ -379,7 +354,7 @@ void childrenFirst(const std::vector<Node2>& nodes, Leaf leaf, Join join) {
 
 // The nodes' linear bounds from the primitives' (PrimitiveSet::bounds_open and
 // bounds_close).
-MotionBoxes nodeMotionBoxes(const PrimitiveSet& prims, const std::vector<Node2>& nodes,
+MotionBoxes nodeMotionBoxes(const PrimitiveSet& prims, const Nodes2& nodes,
                             const PrimRefs& refs) {
   MotionBoxes m;
   m.open.resize(nodes.size());
@@ -402,7 +377,7 @@ MotionBoxes nodeMotionBoxes(const PrimitiveSet& prims, const std::vector<Node2>&
 
 // The diagonal slabs of every binary node (kdop_bounds.h).
 std::vector<DiagonalSlabs> nodeDiagonalSlabs(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims,
-                                             const std::vector<Node2>& nodes, const PrimRefs& refs) {
+                                             const Nodes2& nodes, const PrimRefs& refs) {
   std::vector<DiagonalSlabs> slabs(nodes.size(), DiagonalSlabs::empty());
   childrenFirst(
       nodes,
@@ -417,24 +392,40 @@ std::vector<DiagonalSlabs> nodeDiagonalSlabs(const std::vector<ObjectGpu>& objec
   return slabs;
 }
 
+// The binary tree's leaves that hold references, in the order of their
+// references (a node's left child holds the front of its range).
+std::vector<std::int32_t> leavesInOrder(const Nodes2& nodes) {
+  std::vector<std::int32_t> leaves, todo;
+  if (nodes.empty()) return leaves;
+  leaves.reserve(nodes.size() / 2 + 1);
+  todo.push_back(0);
+  while (!todo.empty()) {
+    const Node2& n = nodes[todo.back()];
+    if (n.left < 0) {
+      if (n.count > 0) leaves.push_back(todo.back());
+      todo.pop_back();
+      continue;
+    }
+    todo.back() = n.right;
+    todo.push_back(n.left);
+  }
+  return leaves;
+}
+
 // Every binary leaf's packets (indexed by node; inner nodes get none). The
 // leaves are taken in the order of their references, cut into one run per
 // thread of about the same number of references; each run is written on its
-// own thread and the runs are joined in order, so the result does not depend
-// on the thread count. Reading the leaves' objects is most of the work (they
-// lie scattered in memory), hence the threads and the prefetching.
-std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects, const std::vector<Node2>& nodes,
-                                          const PrimRefs& refs, ThreadBudget& budget,
-                                          std::vector<TriPacketGpu>& packets) {
+// own thread, so the result does not depend on the thread count. Reading the
+// leaves' objects is most of the work (they lie scattered in memory), hence
+// the threads and the prefetching. Where every primitive is a packet triangle
+// (`triangles_only`, a mesh scene), a leaf of n takes ceil(n / 4) packets, so
+// each run writes straight to its place in `packets`, its pages first touched
+// on its own thread; otherwise the runs' packets are joined in order after.
+std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects, const Nodes2& nodes,
+                                          const PrimRefs& refs, bool triangles_only, ThreadBudget& budget,
+                                          PacketVector& packets) {
   std::vector<PacketRange> ranges(nodes.size());
-  std::vector<std::int32_t> leaf_at(refs.size(), -1);  // the leaf whose references start here
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (nodes[i].left < 0 && nodes[i].count > 0) leaf_at[nodes[i].first] = static_cast<std::int32_t>(i);
-  std::vector<std::int32_t> leaves;
-  leaves.reserve(nodes.size() / 2 + 1);
-  for (std::int32_t leaf : leaf_at)
-    if (leaf >= 0) leaves.push_back(leaf);
-
+  const std::vector<std::int32_t> leaves = leavesInOrder(nodes);
   const std::size_t runs = runsFor(budget, refs.size(), kParallelBoundsPrims);
   std::vector<std::size_t> run_start(runs + 1, leaves.size());
   run_start[0] = 0;
@@ -443,15 +434,26 @@ std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects,
     while (leaf < leaves.size() && static_cast<std::size_t>(nodes[leaves[leaf]].first) < refs_before) ++leaf;
     run_start[r] = leaf;
   }
-  std::vector<std::vector<TriPacketGpu>> run_packets(runs);
+  if (triangles_only) {
+    std::uint32_t next = static_cast<std::uint32_t>(packets.size());
+    for (std::int32_t leaf : leaves) {
+      const auto count = static_cast<std::uint32_t>((nodes[leaf].count + PACKET_LANES - 1) / PACKET_LANES);
+      ranges[leaf] = PacketRange{next, count};
+      next += count;
+    }
+    packets.resize(next);
+  }
+  std::vector<PacketVector> run_packets(triangles_only ? 0 : runs);
   auto writeRun = [&](std::size_t r) {
-    std::vector<TriPacketGpu>& out = run_packets[r];
+    PacketVector* out = triangles_only ? nullptr : &run_packets[r];
     // A leaf of n triangles takes ceil(n / 4) packets, at most n / 4 + 1 (a
     // leaf mixing kinds may take more: only the room's first guess); the first
     // run makes room for every run's, as the others are joined onto it.
-    const std::size_t leaves_in = r == 0 ? leaves.size() : run_start[r + 1] - run_start[r];
-    const std::size_t refs_in = r == 0 ? refs.size() : refs.size() / runs + 1;
-    out.reserve(refs_in / PACKET_LANES + leaves_in);
+    if (out) {
+      const std::size_t leaves_in = r == 0 ? leaves.size() : run_start[r + 1] - run_start[r];
+      const std::size_t refs_in = r == 0 ? refs.size() : refs.size() / runs + 1;
+      out->reserve(refs_in / PACKET_LANES + leaves_in);
+    }
     std::int32_t ids[kMaxLeafPrims];  // every leaf holds at most kMaxLeafPrims
     for (std::size_t k = run_start[r]; k < run_start[r + 1]; ++k) {
       const Node2& leaf = nodes[leaves[k]];
@@ -461,10 +463,14 @@ std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects,
         for (int i = 0; i < ahead.count; ++i) __builtin_prefetch(&objects[refs[ahead.first + i].id]);
       }
       for (int i = 0; i < leaf.count; ++i) ids[i] = refs[leaf.first + i].id;
-      ranges[leaves[k]] = appendLeafPackets(objects, ids, leaf.count, out);
+      if (out)
+        ranges[leaves[k]] = appendLeafPackets(objects, ids, leaf.count, *out);
+      else
+        writeTrianglePackets(objects, ids, leaf.count, &packets[ranges[leaves[k]].start]);
     }
   };
   forEachRun(budget, runs, writeRun);
+  if (triangles_only) return ranges;
   std::size_t total = packets.size();
   for (const auto& run : run_packets) total += run.size();
   for (std::size_t r = 0; r < runs; ++r) {
@@ -487,7 +493,7 @@ class WideFlattener {
   // `kdop`: every binary node's diagonal slabs, for a tree whose nodes carry
   // them; else null.
   // `leaf_packets`: each binary leaf's packets, already in out.packets.
-  WideFlattener(const std::vector<Node2>& nodes, const std::vector<PacketRange>& leaf_packets,
+  WideFlattener(const Nodes2& nodes, const std::vector<PacketRange>& leaf_packets,
                 const MotionBoxes* motion, const std::vector<DiagonalSlabs>* kdop, DeviceAccel& out)
       : m_nodes(nodes), m_leaf_packets(leaf_packets), m_motion(motion), m_kdop(kdop), m_out(out) {}
 
@@ -624,7 +630,7 @@ class WideFlattener {
     return index;
   }
 
-  const std::vector<Node2>& m_nodes;
+  const Nodes2& m_nodes;
   const std::vector<PacketRange>& m_leaf_packets;
   const MotionBoxes* m_motion;
   const std::vector<DiagonalSlabs>* m_kdop;
@@ -673,7 +679,7 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
     all.box.extend(e.box);
     all.centroids.extend(e.centroids);
   }
-  std::vector<Node2> nodes = refs.empty() ? std::vector<Node2>{} : Bvh2Builder(refs, budget).build(all);
+  Nodes2 nodes = refs.empty() ? Nodes2{} : Bvh2Builder(refs, budget).build(all);
   writeSceneHeader(prims.scene, out);
   MotionBoxes motion;
   const bool moving = linear && !nodes.empty();
@@ -684,7 +690,8 @@ void buildBvh(const std::vector<ObjectGpu>& objects, const PrimitiveSet& prims, 
   }
   std::vector<DiagonalSlabs> slabs;
   if (options.kdop_bvh && !nodes.empty()) slabs = nodeDiagonalSlabs(objects, prims, nodes, refs);
-  const std::vector<PacketRange> leaf_packets = writeLeafPackets(objects, nodes, refs, budget, out.packets);
+  const std::vector<PacketRange> leaf_packets =
+      writeLeafPackets(objects, nodes, refs, prims.triangles_only, budget, out.packets);
   WideFlattener(nodes, leaf_packets, moving ? &motion : nullptr, slabs.empty() ? nullptr : &slabs, out)
       .run(prims.scene.area());
   out.stats.references = refs.size();

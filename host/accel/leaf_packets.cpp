@@ -58,8 +58,16 @@ std::size_t motionRecord(const ObjectGpu& ob, std::int32_t id) {
 
 }  // namespace
 
+void writeTrianglePackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
+                          TriPacketGpu* out) {
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i % PACKET_LANES == 0) out[i / PACKET_LANES] = emptyPacket();
+    putTriangle(out[i / PACKET_LANES], static_cast<int>(i % PACKET_LANES), objects[ids[i]], ids[i]);
+  }
+}
+
 PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
-                              std::vector<TriPacketGpu>& out) {
+                              PacketVector& out) {
   PacketRange range;
   range.start = static_cast<std::uint32_t>(out.size());
   // Static triangles four to a packet.

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "accel/uninitialised_vector.h"
 #include "kernels/shared/object_gpu.h"
 #include "kernels/shared/tri_packet_gpu.h"
 
@@ -18,9 +19,18 @@ struct PacketRange {
   std::uint32_t count = 0;
 };
 
+// A structure's packets, which its builder's threads may write in place
+// (uninitialised_vector.h).
+using PacketVector = UninitialisedVector<TriPacketGpu>;
+
 // Appends the leaf's packets to `out` and returns where they are.
 PacketRange appendLeafPackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
-                              std::vector<TriPacketGpu>& out);
+                              PacketVector& out);
+
+// Writes a leaf of n packet triangles (isPacketTriangle, every one) to out,
+// four to a packet, as appendLeafPackets would: ceil(n / 4) packets.
+void writeTrianglePackets(const std::vector<ObjectGpu>& objects, const std::int32_t* ids, std::size_t n,
+                          TriPacketGpu* out);
 
 // A packet-friendly triangle: stored in world space, intersected by the
 // vectorised Moller-Trumbore test.

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <numeric>
 #include <string>
 
+#include "accel/leaf_packets.h"
 #include "accel/task_group.h"
 #include "kernels/shared/mesh_gpu.h"
 #include "kernels/shared/motion_gpu.h"
@@ -259,42 +259,45 @@ unsigned kindBit(const ObjectGpu& ob) { return ob.type >= 0 && ob.type < 32 ? 1u
 PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads) {
   PrimitiveSet set;
   const std::size_t count = primitiveCount(objects);
-  // The static objects' boxes first, on every thread in contiguous runs, each
-  // into its own arrays (the bounds are most of the work, and the arrays' first
-  // writes cost page faults, which the threads then share); moving objects are
-  // bounded below, in order. Each run also notes what the merge needs to know:
-  // whether all its objects are bounded and static, the union of their boxes,
-  // and their kinds (for the kernels' build options).
+  // Every static object's box and index at its own place in set.bounds and
+  // set.bounded, on every thread in contiguous runs: the boxes are most of the
+  // work, and the arrays' first writes cost page faults, which the threads
+  // then share (uninitialised_vector.h). Moving objects are bounded below, in
+  // order, as the arrays are closed up over the unbounded ones. Each run also notes what
+  // that needs to know: whether all its objects are bounded and static, the
+  // union of their boxes, and their kinds (for the kernels' build options).
   struct Run {
-    std::vector<Aabb> boxes;
-    std::vector<unsigned char> finite;
     bool plain = true;  // every object bounded and static
+    bool triangles = true;  // every object a packet triangle
     Aabb scene;
     unsigned kinds = 0;
     bool any_moving = false;
   };
+  set.bounds.resize(count);
+  set.bounded.resize(count);
+  UninitialisedVector<unsigned char> finite(count);  // whether bounds[i] holds a box
   ThreadBudget budget(threads);
   const std::size_t runs = runsFor(budget, count, kParallelBoundsPrims);
   std::vector<Run> run_of(runs);
   forEachRun(budget, runs, [&](std::size_t r) {
     const auto [first, end] = runRange(count, r, runs);
     Run run;  // filled here, not in run_of[r], whose neighbour another thread writes
-    run.boxes.resize(end - first);
-    run.finite.resize(end - first);
     for (std::size_t i = first; i < end; ++i) {
       const ObjectGpu& ob = objects[i];
+      set.bounded[i] = static_cast<std::int32_t>(i);
       run.kinds |= kindBit(ob);
+      run.triangles = run.triangles && isPacketTriangle(ob);
       if (ob.has_transform == OBJECT_MOVING) {
+        finite[i] = 0;
         run.plain = false;
         run.any_moving = true;
         continue;
       }
-      const bool finite = objectBounds(ob, &run.boxes[i - first]);
-      run.finite[i - first] = finite;
-      if (finite) run.scene.extend(run.boxes[i - first]);
-      run.plain = run.plain && finite;
+      finite[i] = objectBounds(ob, &set.bounds[i]);
+      if (finite[i]) run.scene.extend(set.bounds[i]);
+      run.plain = run.plain && finite[i];
     }
-    run_of[r] = std::move(run);
+    run_of[r] = run;
   });
   for (const Run& run : run_of) {
     set.kinds |= run.kinds;
@@ -302,33 +305,29 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads
   }
   if (std::all_of(run_of.begin(), run_of.end(), [](const Run& run) { return run.plain; })) {
     // Every object bounded and static (a mesh scene without planes): the
-    // boxes as they are, joined.
-    set.bounded.resize(count);
-    std::iota(set.bounded.begin(), set.bounded.end(), 0);
-    set.bounds.reserve(count);
-    for (const Run& run : run_of) {
-      set.bounds.insert(set.bounds.end(), run.boxes.begin(), run.boxes.end());
-      set.scene.extend(run.scene);
-    }
+    // boxes as they are.
+    set.triangles_only = std::all_of(run_of.begin(), run_of.end(), [](const Run& run) { return run.triangles; });
+    for (const Run& run : run_of) set.scene.extend(run.scene);
     return set;
   }
-  set.bounded.reserve(count);
-  set.bounds.reserve(count);
-  for (std::size_t i = 0, r = 0, first = 0; i < count; ++i) {
-    while (i >= runRange(count, r, runs).second) first = runRange(count, ++r, runs).first;
+  // Closed up in place: the kept-th bounded object's box and index move from
+  // place i to place kept, kept <= i, so nothing is overwritten unread.
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < count; ++i) {
     const ObjectGpu& ob = objects[i];
     const bool moves = ob.has_transform == OBJECT_MOVING;
-    Aabb b = run_of[r].boxes[i - first], open, close;
-    if (moves ? movingBounds(ob, &b, &open, &close) : run_of[r].finite[i - first] != 0) {
+    Aabb b, open, close;
+    if (moves ? movingBounds(ob, &b, &open, &close) : finite[i] != 0) {
+      if (!moves) b = set.bounds[i];
       if (moves && !set.moving) {  // the first moving one: the static ones so far keep one box
         set.moving = true;
         set.shutter_open = motionOf(ob).shutter_open;
         set.shutter_close = motionOf(ob).shutter_close;
-        set.bounds_open = set.bounds;
-        set.bounds_close = set.bounds;
+        set.bounds_open.assign(set.bounds.begin(), set.bounds.begin() + static_cast<std::ptrdiff_t>(kept));
+        set.bounds_close = set.bounds_open;
       }
-      set.bounded.push_back(static_cast<std::int32_t>(i));
-      set.bounds.push_back(b);
+      set.bounded[kept] = static_cast<std::int32_t>(i);
+      set.bounds[kept++] = b;
       set.scene.extend(b);
       if (set.moving) {
         set.bounds_open.push_back(moves ? open : b);
@@ -338,6 +337,8 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads
       set.unbounded.push_back(static_cast<std::int32_t>(i));
     }
   }
+  set.bounds.resize(kept);
+  set.bounded.resize(kept);
   return set;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/uninitialised_vector.h"
 #include "kernels/shared/object_gpu.h"
 #include "scene/primitives/bounds.h"
 
@@ -25,8 +26,9 @@ bool objectBounds(const ObjectGpu& object, Aabb* bounds);
 bool objectLinearBounds(const ObjectGpu& object, Aabb* open, Aabb* close);
 
 struct PrimitiveSet {
-  std::vector<std::int32_t> bounded;  // object indices, in object order
-  std::vector<Aabb> bounds;           // bounds[i] is the box of object bounded[i] (over its whole motion)
+  // Written in place by gatherPrimitives' threads (uninitialised_vector.h).
+  UninitialisedVector<std::int32_t> bounded;  // object indices, in object order
+  UninitialisedVector<Aabb> bounds;           // bounds[i] is the box of object bounded[i] (over its whole motion)
   std::vector<std::int32_t> unbounded;
   Aabb scene;  // union of `bounds`
   // Whether some bounded primitive moves, the shutter its motion spans, and
@@ -37,6 +39,9 @@ struct PrimitiveSet {
   // (OBJECT_*), and whether some moves (primitiveKernelOptions).
   unsigned kinds = 0;
   bool any_moving = false;
+  // Every primitive a static world-space triangle (leaf_packets.h,
+  // isPacketTriangle), none unbounded: a mesh scene.
+  bool triangles_only = false;
   std::vector<Aabb> bounds_open, bounds_close;
 };
 

@@ -46,8 +46,8 @@ class Buffer {
   // Enqueues copying `bytes` from this buffer at `offset` into `to` at `to_offset`.
   void copyTo(Buffer& to, size_t bytes, size_t offset = 0, size_t to_offset = 0) const;
 
-  template <typename T>
-  void writeVector(const std::vector<T>& v) {
+  template <typename T, typename Allocator>
+  void writeVector(const std::vector<T, Allocator>& v) {
     if (!v.empty()) write(v.data(), v.size() * sizeof(T));
   }
   template <typename T>

@@ -269,36 +269,73 @@ TEST_CASE("an octree cell's content box holds every part of its primitives insid
   CHECK(cells.boxes_outside_parent == 0);
 }
 
-TEST_CASE("the BVH holds each bounded primitive once, inside its boxes", "[accel][builder]") {
-  AccelScene scene = mixedScene(2000);
-  auto bvh = buildAccel(AccelKind::Bvh, scene.objects);
-  PrimitiveSet prims = gatherPrimitives(scene.objects);
-  std::vector<int> seen(scene.objects.size(), 0);
-  const BvhNodeGpu* nodes = nodesOf<BvhNodeGpu>(*bvh);
-  std::size_t outside = 0;
-  std::function<void(int)> walk = [&](int index) {
-    const BvhNodeGpu& n = nodes[index];
-    for (int i = 0; i < BVH_WIDTH; ++i) {
-      int code = n.child[i];
-      if (code > 0) walk(code);
-      if (code >= 0) continue;
-      int x = ~code;
-      for (int id : packetPrims(*bvh, x >> BVH_LEAF_COUNT_BITS, (x & (BVH_LEAF_MAX_PACKETS - 1)) + 1)) {
-        ++seen[id];
-        Aabb b;
-        REQUIRE(objectBounds(scene.objects[id], &b));
-        outside += b.lo[0] < n.lo_x[i] || b.hi[0] > n.hi_x[i] || b.lo[1] < n.lo_y[i] || b.hi[1] > n.hi_y[i] ||
-                   b.lo[2] < n.lo_z[i] || b.hi[2] > n.hi_z[i];
+namespace {
+
+// Each lane of a packet as appendLeafPackets writes it: a packet triangle's
+// vertex and edges, or another primitive's id to test one by one. Returns the
+// lanes that are not.
+std::size_t wrongLanes(const DeviceAccel& a, const std::vector<ObjectGpu>& objects) {
+  std::size_t wrong = 0;
+  for (const TriPacketGpu& p : a.packets)
+    for (int k = 0; k < PACKET_LANES; ++k) {
+      const int id = p.prim[k];
+      if (id == PACKET_EMPTY) continue;
+      if (id <= -2) {
+        wrong += isPacketTriangle(objects[-id - 2]);
+        continue;
       }
+      const float* v = objects[id].p;
+      wrong += !isPacketTriangle(objects[id]) || p.v0x[k] != v[0] || p.v0y[k] != v[1] || p.v0z[k] != v[2] ||
+               p.e1x[k] != v[3] - v[0] || p.e1y[k] != v[4] - v[1] || p.e1z[k] != v[5] - v[2] ||
+               p.e2x[k] != v[6] - v[0] || p.e2y[k] != v[7] - v[1] || p.e2z[k] != v[8] - v[2];
     }
-  };
-  walk(0);
-  CHECK(outside == 0);
-  for (std::size_t i = 0; i < prims.bounded.size(); ++i) CHECK(seen[prims.bounded[i]] == 1);
-  for (int id : prims.unbounded) CHECK(seen[id] == 0);
-  CHECK(bvh->unbounded == prims.unbounded);
-  CHECK(bvh->stats.duplication == 1.0);
-  CHECK(bvh->stats.references == prims.bounded.size());
+  return wrong;
+}
+
+}  // namespace
+
+// Three scenes, for the gather's and the packets' two paths each: with
+// planes (unbounded), every primitive bounded but of several kinds, and a
+// mesh (packet triangles only, whose leaves' packets are written in place).
+TEST_CASE("the BVH holds each bounded primitive once, inside its boxes", "[accel][builder]") {
+  AccelScene mixed = mixedScene(2000);
+  AccelScene bounded = mixed;
+  bounded.objects.erase(std::remove_if(bounded.objects.begin(), bounded.objects.end(),
+                                       [](const ObjectGpu& o) { return o.type == OBJECT_PLANE; }),
+                        bounded.objects.end());
+  const AccelScene scenes[] = {mixed, bounded, meshScene("torus", bumpyTorus(20000))};
+  for (const AccelScene& scene : scenes) {
+    INFO(scene.objects.size() << " objects");
+    auto bvh = buildAccel(AccelKind::Bvh, scene.objects);
+    PrimitiveSet prims = gatherPrimitives(scene.objects);
+    std::vector<int> seen(scene.objects.size(), 0);
+    const BvhNodeGpu* nodes = nodesOf<BvhNodeGpu>(*bvh);
+    std::size_t outside = 0;
+    std::function<void(int)> walk = [&](int index) {
+      const BvhNodeGpu& n = nodes[index];
+      for (int i = 0; i < BVH_WIDTH; ++i) {
+        int code = n.child[i];
+        if (code > 0) walk(code);
+        if (code >= 0) continue;
+        int x = ~code;
+        for (int id : packetPrims(*bvh, x >> BVH_LEAF_COUNT_BITS, (x & (BVH_LEAF_MAX_PACKETS - 1)) + 1)) {
+          ++seen[id];
+          Aabb b;
+          REQUIRE(objectBounds(scene.objects[id], &b));
+          outside += b.lo[0] < n.lo_x[i] || b.hi[0] > n.hi_x[i] || b.lo[1] < n.lo_y[i] || b.hi[1] > n.hi_y[i] ||
+                     b.lo[2] < n.lo_z[i] || b.hi[2] > n.hi_z[i];
+        }
+      }
+    };
+    walk(0);
+    CHECK(outside == 0);
+    CHECK(wrongLanes(*bvh, scene.objects) == 0);
+    for (std::size_t i = 0; i < prims.bounded.size(); ++i) CHECK(seen[prims.bounded[i]] == 1);
+    for (int id : prims.unbounded) CHECK(seen[id] == 0);
+    CHECK(bvh->unbounded == prims.unbounded);
+    CHECK(bvh->stats.duplication == 1.0);
+    CHECK(bvh->stats.references == prims.bounded.size());
+  }
 }
 
 TEST_CASE("builds report their statistics", "[accel][builder]") {
