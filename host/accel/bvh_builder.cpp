@@ -12,8 +12,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
-#include <new>
 #include <utility>
 
 #include "accel/box4.h"
@@ -414,13 +412,14 @@ std::vector<std::int32_t> leavesInOrder(const Nodes2& nodes) {
 
 // Every binary leaf's packets (indexed by node; inner nodes get none). The
 // leaves are taken in the order of their references, cut into one run per
-// thread of about the same number of references; each run is written on its
-// own thread, so the result does not depend on the thread count. Reading the
-// leaves' objects is most of the work (they lie scattered in memory), hence
-// the threads and the prefetching. Where every primitive is a packet triangle
-// (`triangles_only`, a mesh scene), a leaf of n takes ceil(n / 4) packets, so
-// each run writes straight to its place in `packets`, its pages first touched
-// on its own thread; otherwise the runs' packets are joined in order after.
+// thread of about the same number of references, each written on its own
+// thread. Reading the leaves' objects is most of the work (they lie scattered
+// in memory), hence the threads and the prefetching. Where every primitive is
+// a packet triangle (`triangles_only`, a mesh scene), a leaf of n takes
+// ceil(n / 4) packets, so each run writes straight to its leaves' places in
+// `packets`, its pages first touched on its own thread; otherwise the runs'
+// packets are joined in order after. Either way the packets lie in leaf
+// order, so the result does not depend on the thread count.
 std::vector<PacketRange> writeLeafPackets(const std::vector<ObjectGpu>& objects, const Nodes2& nodes,
                                           const PrimRefs& refs, bool triangles_only, ThreadBudget& budget,
                                           PacketVector& packets) {

@@ -263,9 +263,10 @@ PrimitiveSet gatherPrimitives(const std::vector<ObjectGpu>& objects, int threads
   // set.bounded, on every thread in contiguous runs: the boxes are most of the
   // work, and the arrays' first writes cost page faults, which the threads
   // then share (uninitialised_vector.h). Moving objects are bounded below, in
-  // order, as the arrays are closed up over the unbounded ones. Each run also notes what
-  // that needs to know: whether all its objects are bounded and static, the
-  // union of their boxes, and their kinds (for the kernels' build options).
+  // order, as the arrays are closed up over the unbounded ones. Each run also
+  // notes what that needs to know: whether all its objects are bounded and
+  // static (and packet triangles), the union of their boxes, and their kinds
+  // (for the kernels' build options).
   struct Run {
     bool plain = true;  // every object bounded and static
     bool triangles = true;  // every object a packet triangle

@@ -1,9 +1,9 @@
 // A vector whose resize leaves its new elements unwritten, for the arrays a
 // build fills on several threads. A build's arrays are fresh memory, and the
 // first write to each page costs a page fault (about 1.5 us a page on the
-// development machine, a quarter to a third of a first BVH build of the 69k
-// bunny; docs/accel.md, "Fewer fresh pages"). Sized by this vector, a page is
-// first touched by the thread that fills it, and nothing writes it before.
+// development machine, about a quarter of a first BVH build of the 69k bunny;
+// docs/accel.md, "Fewer fresh pages"). Sized by this vector, a page is first
+// touched by the thread that fills it, and nothing writes it before.
 #pragma once
 
 #include <memory>
@@ -17,7 +17,9 @@ namespace prism {
 // construct() without a value does nothing, not even the element's default
 // member initialisers (Aabb's): the elements are implicit-lifetime types
 // (trivially copyable aggregates), which the filling thread's first
-// assignment gives their values. Read none before it is written.
+// assignment gives their values. (C++20 words it so, P0593; the compilers
+// treat C++17 code, which this is, the same way.) Read none before it is
+// written.
 template <typename T>
 struct UninitialisedAllocator : std::allocator<T> {
   static_assert(std::is_trivially_copyable<T>::value && std::is_trivially_destructible<T>::value,

@@ -20,8 +20,10 @@
 #include "kernels/shared/bsp_node_gpu.h"
 #include "kernels/shared/bvh_node_gpu.h"
 #include "kernels/shared/octree_node_gpu.h"
+#include "render/gpu_scene.h"
 #include "render/ray_queries.h"
 #include "render/render_options.h"
+#include "scene/scene_loader.h"
 #include "support/shared_context.h"
 
 using namespace prism;
@@ -38,7 +40,7 @@ std::set<int> packetPrims(const DeviceAccel& a, std::size_t start, std::size_t c
   for (std::size_t p = start; p < start + count; ++p)
     for (int k = 0; k < PACKET_LANES; ++k) {
       int id = a.packets[p].prim[k];
-      if (id >= 0) ids.insert(id);
+      if (id >= 0) ids.insert(id & ~PACKET_MOVING);
       if (id <= -2) ids.insert(-id - 2);
     }
   return ids;
@@ -272,8 +274,8 @@ TEST_CASE("an octree cell's content box holds every part of its primitives insid
 namespace {
 
 // Each lane of a packet as appendLeafPackets writes it: a packet triangle's
-// vertex and edges, or another primitive's id to test one by one. Returns the
-// lanes that are not.
+// (or a moving one's, its id flagged PACKET_MOVING) vertex and edges, or
+// another primitive's id to test one by one. Returns the lanes that are not.
 std::size_t wrongLanes(const DeviceAccel& a, const std::vector<ObjectGpu>& objects) {
   std::size_t wrong = 0;
   for (const TriPacketGpu& p : a.packets)
@@ -281,32 +283,63 @@ std::size_t wrongLanes(const DeviceAccel& a, const std::vector<ObjectGpu>& objec
       const int id = p.prim[k];
       if (id == PACKET_EMPTY) continue;
       if (id <= -2) {
-        wrong += isPacketTriangle(objects[-id - 2]);
+        const ObjectGpu& ob = objects[-id - 2];
+        wrong += isPacketTriangle(ob) || (isMovingPacketTriangle(ob) && -id - 2 < PACKET_MOVING);
         continue;
       }
-      const float* v = objects[id].p;
-      wrong += !isPacketTriangle(objects[id]) || p.v0x[k] != v[0] || p.v0y[k] != v[1] || p.v0z[k] != v[2] ||
-               p.e1x[k] != v[3] - v[0] || p.e1y[k] != v[4] - v[1] || p.e1z[k] != v[5] - v[2] ||
-               p.e2x[k] != v[6] - v[0] || p.e2y[k] != v[7] - v[1] || p.e2z[k] != v[8] - v[2];
+      const bool moving = (id & PACKET_MOVING) != 0;
+      const ObjectGpu& ob = objects[id & ~PACKET_MOVING];
+      const float* v = ob.p;
+      wrong += !(moving ? isMovingPacketTriangle(ob) : isPacketTriangle(ob)) || p.v0x[k] != v[0] ||
+               p.v0y[k] != v[1] || p.v0z[k] != v[2] || p.e1x[k] != v[3] - v[0] || p.e1y[k] != v[4] - v[1] ||
+               p.e1z[k] != v[5] - v[2] || p.e2x[k] != v[6] - v[0] || p.e2y[k] != v[7] - v[1] ||
+               p.e2z[k] != v[8] - v[2];
     }
   return wrong;
 }
 
+// Static objects, a plane among them, then moving ones: the gather closes its
+// arrays up over the plane and bounds the moving objects after its threads.
+const char* kMovingScene = R"({
+  "camera": {"shutter": [0, 1]},
+  "objects": [
+    {"type": "sphere", "center": [0, 0, 0], "radius": 1},
+    {"type": "triangle", "vertices": [[0, 0, 2], [1, 0, 2], [0, 1, 2]]},
+    {"type": "plane", "point": [0, -2, 0], "normal": [0, 1, 0]},
+    {"type": "box", "min": [-3, -1, -1], "max": [-2, 1, 1]},
+    {"type": "triangle", "vertices": [[2, 0, 0], [3, 0, 0], [2, 1, 0]], "transform_end": {"translate": [0, 1, 0]}},
+    {"type": "triangle", "vertices": [[2, 0, 1], [3, 0, 1], [2, 1, 1]], "transform_end": {"translate": [0, 1, 0]}},
+    {"type": "sphere", "center": [5, 0, 0], "radius": 0.5, "transform_end": {"translate": [1, 0, 0]}},
+    {"type": "triangle", "vertices": [[0, 3, 0], [1, 3, 0], [0, 4, 0]]}
+  ]
+})";
+
+AccelScene movingScene() {
+  const Scene scene = parseScene(kMovingScene, "moving.json");
+  AccelScene s;
+  s.name = "moving";
+  s.objects = flattenScene(scene, RenderOptions::fromScene(scene)).objects;
+  return s;
+}
+
 }  // namespace
 
-// Three scenes, for the gather's and the packets' two paths each: with
-// planes (unbounded), every primitive bounded but of several kinds, and a
-// mesh (packet triangles only, whose leaves' packets are written in place).
+// Four scenes, for the gather's and the packets' paths: with planes
+// (unbounded), every primitive bounded but of several kinds, a mesh (packet
+// triangles only, whose leaves' packets are written in place), and moving
+// primitives (built over their swept boxes, whose nodes are plain BVH nodes).
 TEST_CASE("the BVH holds each bounded primitive once, inside its boxes", "[accel][builder]") {
   AccelScene mixed = mixedScene(2000);
   AccelScene bounded = mixed;
   bounded.objects.erase(std::remove_if(bounded.objects.begin(), bounded.objects.end(),
                                        [](const ObjectGpu& o) { return o.type == OBJECT_PLANE; }),
                         bounded.objects.end());
-  const AccelScene scenes[] = {mixed, bounded, meshScene("torus", bumpyTorus(20000))};
+  const AccelScene scenes[] = {mixed, bounded, meshScene("torus", bumpyTorus(20000)), movingScene()};
+  AccelBuildOptions swept;
+  swept.bvh_linear_bounds = false;
   for (const AccelScene& scene : scenes) {
-    INFO(scene.objects.size() << " objects");
-    auto bvh = buildAccel(AccelKind::Bvh, scene.objects);
+    INFO(scene.name << ", " << scene.objects.size() << " objects");
+    auto bvh = buildAccel(AccelKind::Bvh, scene.objects, swept);
     PrimitiveSet prims = gatherPrimitives(scene.objects);
     std::vector<int> seen(scene.objects.size(), 0);
     const BvhNodeGpu* nodes = nodesOf<BvhNodeGpu>(*bvh);
