@@ -6,12 +6,20 @@
  *     with its primary ray's direction; positions that come in pixel order
  *     stay in it (firsthit_pixel_dirs stores their directions);
  *   firsthit_bound: per primitive, the film pixels its conservative bounds touch
- *     (sampling/film_bounds.h) and how many 8x8-pixel blocks they span;
+ *     (sampling/film_bounds.h), how many 8x8-pixel blocks they span, and
+ *     whether it is a triangle facing away from the camera, with the least t
+ *     its tests can return (firsthit_least_t8);
  *   firsthit_emit: one (primitive, block) pair per such block, at offsets
- *     scanned from those counts (scan.cl);
+ *     scanned from those counts (scan.cl), the pairs of triangles facing away
+ *     after all the others;
  *   firsthit_raster: per pair, the ray test against every sample of the block's
  *     pixels inside the bounds, and an atomic minimum of (t, primitive) into the
  *     sample's depth + id entry;
+ *   firsthit_row_far: between a raster launch over the other
+ *     pairs and one over those facing away, the farthest depth kept in each
+ *     row of each block, so that the second launch skips a row where the
+ *     triangle's least t lies beyond it (on a closed mesh seen from outside,
+ *     most of the rows of the half that faces away);
  *   firsthit_resolve: per sample, the winner's t, u, v by the tracer's own
  *     prim_intersect.
  *
@@ -19,7 +27,9 @@
  * triangle_intersect split at the origin, which gives the same bits), so a
  * sample's depth and id are what tracing its ray gives; equal depths go to the
  * lower primitive index, as in a brute-force loop over the scene. The minimum
- * does not depend on the order of the atomics, so neither does the result.
+ * does not depend on the order of the atomics, so neither does the result;
+ * a skipped row is one where the triangle's every t would lose to the depth
+ * already kept at each sample (depths only fall), so skipping changes nothing.
  *
  * Entries are 2 uints per sample, all bits set when empty (firsthit_place).
  * With 64-bit atomics (PRISM_ZBUFFER_WIDE) an entry is one ulong, t's bits
@@ -166,14 +176,56 @@ inline int firsthit_blocks(int4 r) {
  * batch's samples (a batch in pixel order covers a band of the film; any
  * other, all of it), and the blocks they span (0 when culled). */
 PRISM_HOT void firsthit_put_cells(const FilmProjector* c, const FilmHull* hull, int row_first, int row_last, int item,
-                                  __global int4* cells, __global int* block_count) {
+                                  int items, int back, __global int4* cells, __global int* block_count) {
   int4 r = (int4)(0, 0, -1, -1);
   int4 bounded;
   if ((hull->front > 0 || hull->near > 0 || hull->behind > 0) &&
       film_hull_cells(c, hull, &bounded) != FILM_BOUNDS_CULLED && bounded.y <= row_last && bounded.w >= row_first)
     r = (int4)(bounded.x, max(bounded.y, row_first), bounded.z, min(bounded.w, row_last));
   cells[item] = r;
-  block_count[item] = firsthit_blocks(r);
+  block_count[item + (back ? items : 0)] = firsthit_blocks(r);
+  block_count[item + (back ? 0 : items)] = 0;
+}
+
+/* A lower bound on every t the ray tests of firsthit_raster can return for a
+ * triangle (edges e1, e2 from v0; tv = o - v0), eight triangles in lanes, over
+ * the samples inside film box x0..x1, y0..y1 (grown by a pixel and a half,
+ * past the pixels the box touches). t = e2.qv / det with e2.qv = tv.(e1 x e2),
+ * and det = d.(e2 x e1), d = w / |w| for the unnormalised direction w = f + X r
+ * + Y u. w.(e2 x e1) is linear in X and Y, so its largest size over the box is
+ * at a corner; |w| is at least w.c / |c| for the box's central w = c, also
+ * least at a corner. Each slack is 1e-4 of the size of what it covers, a
+ * thousand times the rounding of the directions, of det and of e2.qv, so the
+ * bound holds of the computed t, not only of the exact one. 0 where no bound
+ * is known. */
+PRISM_HOT float8 firsthit_least_t8(const FilmProjector* c, float8 tx, float8 ty, float8 tz, float8 ax, float8 ay,
+                                   float8 az, float8 bx, float8 by, float8 bz, float8 x0, float8 y0, float8 x1,
+                                   float8 y1) {
+  float8 mx = by * az - bz * ay, my = bz * ax - bx * az, mz = bx * ay - by * ax; /* e2 x e1 */
+  float8 e1n = fabs(ax) + fabs(ay) + fabs(az), e2n = fabs(bx) + fabs(by) + fabs(bz);
+  float8 size = fabs(mx) + fabs(my) + fabs(mz) + e1n * e2n;
+  float8 qv = fabs(tx * mx + ty * my + tz * mz) - 1e-4f * (fabs(tx) + fabs(ty) + fabs(tz)) * e1n * e2n;
+  float8 fm = c->f.x * mx + c->f.y * my + c->f.z * mz, rm = c->r.x * mx + c->r.y * my + c->r.z * mz,
+         um = c->u.x * mx + c->u.y * my + c->u.z * mz;
+  float fn = fabs(c->f.x) + fabs(c->f.y) + fabs(c->f.z), rn = fabs(c->r.x) + fabs(c->r.y) + fabs(c->r.z),
+        un = fabs(c->u.x) + fabs(c->u.y) + fabs(c->u.z);
+  float8 xs[2] = {2.0f * (x0 - 1.5f) / c->w - 1.0f, 2.0f * (x1 + 1.5f) / c->w - 1.0f};
+  float8 ys[2] = {1.0f - 2.0f * (y0 - 1.5f) / c->h, 1.0f - 2.0f * (y1 + 1.5f) / c->h};
+  float8 cX = 0.5f * (xs[0] + xs[1]), cY = 0.5f * (ys[0] + ys[1]);
+  float8 cx = c->f.x + cX * c->r.x + cY * c->u.x, cy = c->f.y + cX * c->r.y + cY * c->u.y,
+         cz = c->f.z + cX * c->r.z + cY * c->u.z;
+  float8 c_len = sqrt(cx * cx + cy * cy + cz * cz);
+  float8 fc = c->f.x * cx + c->f.y * cy + c->f.z * cz, rc = c->r.x * cx + c->r.y * cy + c->r.z * cz,
+         uc = c->u.x * cx + c->u.y * cy + c->u.z * cz;
+  float8 most = (float8)(0.0f), least_w = (float8)(INFINITY);
+  for (int i = 0; i < 4; ++i) {
+    float8 X = xs[i & 1], Y = ys[i >> 1];
+    float8 w1 = fn + (1.0f + fabs(X)) * rn + (1.0f + fabs(Y)) * un; /* >= |w|, with X's rounding */
+    most = fmax(most, fabs(fm + X * rm + Y * um) + 1e-4f * w1 * size);
+    least_w = fmin(least_w, (fc + X * rc + Y * uc) / c_len - 1e-4f * w1);
+  }
+  float8 t = qv / (most / least_w + 1e-4f * size) * 0.9999f;
+  return select((float8)(0.0f), t, (least_w > 0.0f) & (t > 0.0f) & (t < INFINITY));
 }
 
 /* block_count[item]: the blocks its cells span (0 when culled); the host turns
@@ -186,7 +238,8 @@ PRISM_HOT void firsthit_put_cells(const FilmProjector* c, const FilmHull* hull, 
  * the others. */
 __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS,
                              __global const int* other_prims, __global const float* other_boxes, int others,
-                             int row_first, int row_last, __global int4* cells, __global int* block_count) {
+                             int row_first, int row_last, __global int4* cells, __global int* block_count,
+                             __global float* least_t) {
   const Geometry g = GEOMETRY_INIT;
   const int prims = g.prim_count;
   const int groups = prims / FIRSTHIT_BOUND_LANES + (prims % FIRSTHIT_BOUND_LANES != 0);
@@ -199,7 +252,7 @@ __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_P
     __global const float* b = other_boxes + 6 * (item - prims);
     for (int i = 0; i < 8; ++i)
       film_hull_add(&c, (float3)(b[(i & 1) ? 3 : 0], b[(i & 2) ? 4 : 1], b[(i & 4) ? 5 : 2]), &hull);
-    firsthit_put_cells(&c, &hull, row_first, row_last, item, cells, block_count);
+    firsthit_put_cells(&c, &hull, row_first, row_last, item, prims + others, 0, cells, block_count);
     return;
   }
   int first = k * FIRSTHIT_BOUND_LANES;
@@ -215,13 +268,32 @@ __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_P
     }
   }
   int8 in = vload8(0, plain);
+
   int8 behind = (int8)(0), near = (int8)(0), front = (int8)(0);
   float8 x0 = (float8)(INFINITY), y0 = (float8)(INFINITY), x1 = (float8)(-INFINITY), y1 = (float8)(-INFINITY);
   for (int i = 0; i < 3; ++i)
     film_hull_add8(&c, vload8(0, v[i][0]), vload8(0, v[i][1]), vload8(0, v[i][2]), in, &behind, &near, &front,
                        &x0, &y0, &x1, &y1);
-  int ba[8], na[8], fa[8];
+  /* Which way each triangle faces the camera: the sign of (o - v0).(e1 x e2),
+   * the numerator of every t its tests compute (firsthit_raster's e2_qv);
+   * and, for those facing away, the least t their tests can return. */
+  float8 tx = (float8)(c.o.x) - vload8(0, v[0][0]), ty = (float8)(c.o.y) - vload8(0, v[0][1]),
+         tz = (float8)(c.o.z) - vload8(0, v[0][2]);
+  float8 ax = vload8(0, v[1][0]) - vload8(0, v[0][0]), ay = vload8(0, v[1][1]) - vload8(0, v[0][1]),
+         az = vload8(0, v[1][2]) - vload8(0, v[0][2]);
+  float8 bx = vload8(0, v[2][0]) - vload8(0, v[0][0]), by = vload8(0, v[2][1]) - vload8(0, v[0][1]),
+         bz = vload8(0, v[2][2]) - vload8(0, v[0][2]);
+  float8 facing = tx * (ay * bz - az * by) + ty * (az * bx - ax * bz) + tz * (ax * by - ay * bx);
+  int8 back = in & (facing <= 0.0f);
+  /* The box holds the whole triangle only where its three vertices lie in front. */
+  int8 bounded = back & (front == (int8)(3));
+  float8 least = (float8)(0.0f);
+  if (any8_t(bounded))
+    least = select(least, firsthit_least_t8(&c, tx, ty, tz, ax, ay, az, bx, by, bz, x0, y0, x1, y1), bounded);
+  int ba[8], na[8], fa[8], back_a[8];
   float x0a[8], y0a[8], x1a[8], y1a[8];
+  vstore8(back, 0, back_a);
+  vstore8(least, 0, least_t + first);
   vstore8(behind, 0, ba);
   vstore8(near, 0, na);
   vstore8(front, 0, fa);
@@ -235,17 +307,44 @@ __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_P
     hull.behind = ba[l];
     hull.near = na[l];
     hull.front = fa[l];
-    firsthit_put_cells(&c, &hull, row_first, row_last, first + l, cells, block_count);
+    firsthit_put_cells(&c, &hull, row_first, row_last, first + l, prims + others, back_a[l], cells, block_count);
   }
 }
 
-__kernel void firsthit_emit(int items, __global const int4* cells, __global const int* pair_start,
-                            __global int2* pairs) {
+/* Pairs of front-facing primitives first (block_count[item]), then those of
+ * back-facing triangles (block_count[items + item]): one scan of both. */
+__kernel void firsthit_emit(int items, __global const int4* cells, __global const int* block_count,
+                            __global const int* pair_start, __global int2* pairs) {
   int item = get_global_id(0);
   if (item >= items) return;
   int blocks = firsthit_blocks(cells[item]);
-  int start = pair_start[item];
+  int start = block_count[item] ? pair_start[item] : pair_start[items + item];
   for (int b = 0; b < blocks; ++b) pairs[start + b] = (int2)(item, b);
+}
+
+/* The farthest kept depth of the batch's samples in each row of each 8x8
+ * block (row_far[8 * block + row]), as t's bits (all bits set while a sample
+ * is empty; 0 for a row without samples), for firsthit_raster's cull. */
+__kernel void firsthit_row_far(int width, int height, int spp, int first, int count, __global const int* cell_start,
+                               __global const uint* entries, __global uint* row_far) {
+  int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK, blocks_y = (height + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
+  int k = get_global_id(0);
+  if (k >= blocks_x * blocks_y) return;
+  int bx = k % blocks_x, by = k / blocks_x;
+  int x0 = bx * FIRSTHIT_BLOCK, x1 = min(width, x0 + FIRSTHIT_BLOCK) - 1;
+  for (int row = 0; row < FIRSTHIT_BLOCK; ++row) {
+    int y = by * FIRSTHIT_BLOCK + row;
+    uint far = 0;
+    int2 run = y < height ? firsthit_row_slots(x0, x1, y, width, spp, first, count, cell_start) : (int2)(0);
+    for (int n = run.x; n < run.y; ++n) {
+#ifdef PRISM_ZBUFFER_WIDE
+      far = max(far, (uint)(((__global const ulong*)entries)[n] >> 32));
+#else
+      far = max(far, entries[2 * n]);
+#endif
+    }
+    row_far[FIRSTHIT_BLOCK * k + row] = far;
+  }
 }
 
 inline void firsthit_keep(__global uint* entries, int slot, float t, int prim, int pass) {
@@ -261,14 +360,15 @@ inline void firsthit_keep(__global uint* entries, int slot, float t, int prim, i
 }
 
 __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS,
-                              __global const int* other_prims, __global const int4* cells, int pair_count,
-                              __global const int2* pairs, int spp, int first, int count,
+                              __global const int* other_prims, __global const int4* cells, int pair_first,
+                              int pair_end, __global const int2* pairs, int spp, int first, int count,
                               __global const int* cell_start, __global const float4* sorted, int pass,
+                              __global const float* least_t, __global const uint* row_far, int cull,
                               __global uint* entries) {
   const Geometry g = GEOMETRY_INIT;
   const int prims = g.prim_count;
-  int k = get_global_id(0);
-  if (k >= pair_count) return;
+  int k = pair_first + get_global_id(0);
+  if (k >= pair_end) return;
   int2 pair = pairs[k];
   int4 r = cells[pair.x];
   int prim = firsthit_prim(pair.x, prims, other_prims);
@@ -278,6 +378,20 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
   int x0 = max(r.x, bx * FIRSTHIT_BLOCK), x1 = min(r.z, bx * FIRSTHIT_BLOCK + FIRSTHIT_BLOCK - 1);
   int y0 = max(r.y, by * FIRSTHIT_BLOCK), y1 = min(r.w, by * FIRSTHIT_BLOCK + FIRSTHIT_BLOCK - 1);
   int width = camera->width;
+  /* A back-facing triangle's pair, rasterised after the rest, skips each row
+   * of its block where none of its tests could return a t as near as the
+   * row's farthest kept depth (firsthit_least_t8; an empty sample's all-ones
+   * bits read as NaN: never skipped), and the whole pair where that holds of
+   * every row it spans. */
+  float least = 0.0f;
+  __global const uint* rows = row_far;
+  if (cull) {
+    least = least_t[pair.x];
+    rows = row_far + FIRSTHIT_BLOCK * (by * ((width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK) + bx) - by * FIRSTHIT_BLOCK;
+    bool needed = false;
+    for (int y = y0; y <= y1; ++y) needed |= !(least > as_float(rows[y]));
+    if (!needed) return;
+  }
   float3 o = load3g(camera->origin);
   float time = camera->shutter_open;
   /* Two loops, not one with a branch inside: the plain triangle's tests four
@@ -288,6 +402,7 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
     TriangleFromOrigin tri = triangle_from_origin(o, v0, v1, v2);
     const float e2_qv = tri_dot(tri.e2, tri.qv);
     for (int y = y0; y <= y1; ++y) {
+      if (cull && least > as_float(rows[y])) continue;
       int2 run = firsthit_row_slots(x0, x1, y, width, spp, first, count, cell_start);
       int end = run.y;
       for (int n = run.x; n < end; n += 4) {

@@ -17,6 +17,8 @@ constexpr size_t kFirstHitDirLanes = 8;
 // Primitives a work-item of firsthit_bound takes (FIRSTHIT_BOUND_LANES); the
 // other primitives' boxes one a work-item after them.
 constexpr size_t kFirstHitBoundLanes = 8;
+// Pixels a side of a raster block (FIRSTHIT_BLOCK).
+constexpr size_t kBlock = 8;
 
 template <typename T>
 void upload(Context& context, Buffer& b, const std::vector<T>& v) {
@@ -46,6 +48,7 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_pixel_dirs = m_context.kernel("firsthit.cl", "firsthit_pixel_dirs", options);
   m_bound = m_context.kernel("firsthit.cl", "firsthit_bound", options);
   m_emit = m_context.kernel("firsthit.cl", "firsthit_emit", options);
+  m_row_far_kernel = m_context.kernel("firsthit.cl", "firsthit_row_far", options);
   m_raster = m_context.kernel("firsthit.cl", "firsthit_raster", options);
   m_resolve = m_context.kernel("firsthit.cl", "firsthit_resolve", options);
 
@@ -83,8 +86,14 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_slot_of = Buffer(m_context, sizeof(std::int32_t));  // bound, unread, until a batch needs sorting
   const size_t items = m_prims + m_others;
   m_cells = Buffer(m_context, std::max<size_t>(1, items) * 4 * sizeof(std::int32_t));
-  m_block_count = Buffer(m_context, std::max<size_t>(1, items) * sizeof(std::int32_t));
-  m_pair_start = Buffer(m_context, (items + 1) * sizeof(std::int32_t));
+  // Front-facing primitives' block counts, then back-facing triangles'.
+  m_block_count = Buffer(m_context, std::max<size_t>(1, 2 * items) * sizeof(std::int32_t));
+  m_pair_start = Buffer(m_context, (2 * items + 1) * sizeof(std::int32_t));
+  // Plain triangles come first, eight to a work-item of firsthit_bound, which
+  // writes all eight lanes.
+  m_least_t = Buffer(m_context, ((m_prims + kFirstHitBoundLanes - 1) / kFirstHitBoundLanes * kFirstHitBoundLanes + 1) *
+                                    sizeof(float));
+  m_row_far = Buffer(m_context, cells / kBlock * sizeof(std::uint32_t));
   m_batch = 0;
   m_stats = FirstHitStats{};
   m_stats.others = m_others;
@@ -154,10 +163,12 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
       .arg(static_cast<cl_int>(row_last))
       .arg(m_cells)
       .arg(m_block_count)
+      .arg(m_least_t)
       .run((m_prims + kFirstHitBoundLanes - 1) / kFirstHitBoundLanes + m_others);
-  m_scan.exclusive(m_block_count, items, m_pair_start);
-  std::int32_t total = 0;
-  m_pair_start.read(&total, sizeof total, items * sizeof(std::int32_t));
+  m_scan.exclusive(m_block_count, 2 * items, m_pair_start);
+  std::int32_t total = 0, front = 0;
+  m_pair_start.read(&total, sizeof total, 2 * items * sizeof(std::int32_t));
+  m_pair_start.read(&front, sizeof front, items * sizeof(std::int32_t));
   if (total >= kScanSaturated)
     throw std::runtime_error(
         "first hit zbuffer: the primitives' film bounds cover 2^31 or more 8x8-pixel blocks; use --first-hit trace");
@@ -166,14 +177,25 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   m_batch = count;
   if (total == 0) return;
   m_pairs.reserve(m_context, static_cast<size_t>(total) * 2 * sizeof(std::int32_t));
-  m_context.launch(m_emit).arg(static_cast<cl_int>(items)).arg(m_cells).arg(m_pair_start).arg(m_pairs).run(items);
-  for (int pass = 0; pass < (m_wide ? 1 : 2); ++pass) {
-    KernelLaunch raster = m_context.launch(m_raster);
-    raster.arg(m_camera);
-    geometry.bind(raster)
+  m_context.launch(m_emit)
+      .arg(static_cast<cl_int>(items))
+      .arg(m_cells)
+      .arg(m_block_count)
+      .arg(m_pair_start)
+      .arg(m_pairs)
+      .run(items);
+  // The pairs of triangles facing away from the camera go last, each skipping
+  // the rows of its block where the farthest depth kept by the others lies
+  // nearer than any t it could return (kernels/firsthit.cl).
+  const bool cull = front > 0 && front < total;
+  auto raster = [&](int pass, std::int32_t pair_first, std::int32_t pair_end, bool culled) {
+    KernelLaunch launch = m_context.launch(m_raster);
+    launch.arg(m_camera);
+    geometry.bind(launch)
         .arg(m_other_prims)
         .arg(m_cells)
-        .arg(static_cast<cl_int>(total))
+        .arg(static_cast<cl_int>(pair_first))
+        .arg(static_cast<cl_int>(pair_end))
         .arg(m_pairs)
         .arg(static_cast<cl_int>(std::max(pixel_spp, 0)))
         .arg(at)
@@ -181,8 +203,30 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(m_cell_start)
         .arg(m_sorted)
         .arg(static_cast<cl_int>(pass))
+        .arg(m_least_t)
+        .arg(m_row_far)
+        .arg(static_cast<cl_int>(culled))
         .arg(m_entries)
-        .run(static_cast<size_t>(total));
+        .run(static_cast<size_t>(pair_end - pair_first));
+  };
+  for (int pass = 0; pass < (m_wide ? 1 : 2); ++pass) {
+    if (!cull) {
+      raster(pass, 0, total, false);
+      continue;
+    }
+    raster(pass, 0, front, false);
+    if (pass == 0)
+      m_context.launch(m_row_far_kernel)
+          .arg(static_cast<cl_int>(m_width))
+          .arg(static_cast<cl_int>(m_height))
+          .arg(static_cast<cl_int>(pixel_spp))
+          .arg(at)
+          .arg(n)
+          .arg(m_cell_start)
+          .arg(m_entries)
+          .arg(m_row_far)
+          .run(cells / (kBlock * kBlock));
+    raster(pass, front, total, true);
   }
 }
 
@@ -203,7 +247,6 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
 }
 
 size_t FirstHitPass::cellCount() const {
-  constexpr size_t kBlock = 8;  // FIRSTHIT_BLOCK
   return (static_cast<size_t>(m_width) + kBlock - 1) / kBlock * ((static_cast<size_t>(m_height) + kBlock - 1) / kBlock) *
          kBlock * kBlock;
 }
@@ -220,7 +263,7 @@ size_t FirstHitPass::batchBytes() const {
 size_t FirstHitPass::deviceBytes() const {
   size_t bytes = 0;
   for (const Buffer* b : {&m_camera, &m_other_prims, &m_other_boxes, &m_cell_count, &m_cell_start, &m_sorted, &m_slot_of,
-                          &m_entries, &m_cells, &m_block_count, &m_pair_start, &m_pairs})
+                          &m_entries, &m_cells, &m_block_count, &m_pair_start, &m_pairs, &m_least_t, &m_row_far})
     bytes += b->bytes();
   return bytes;
 }

@@ -68,7 +68,7 @@ class FirstHitPass {
   ZBufferAtomics m_atomics;
   DeviceScan m_scan;
   cl_kernel m_count_cells = nullptr, m_sort_samples = nullptr, m_pixel_dirs = nullptr, m_bound = nullptr,
-            m_emit = nullptr, m_raster = nullptr, m_resolve = nullptr;
+            m_emit = nullptr, m_row_far_kernel = nullptr, m_raster = nullptr, m_resolve = nullptr;
   bool m_wide = false;
   int m_width = 0, m_height = 0;
   std::size_t m_prims = 0, m_others = 0, m_batch = 0;
@@ -78,7 +78,7 @@ class FirstHitPass {
   std::size_t cellCount() const;
 
   Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_sorted, m_slot_of, m_entries,
-      m_cells, m_block_count, m_pair_start, m_pairs;
+      m_cells, m_block_count, m_pair_start, m_pairs, m_least_t, m_row_far;
 };
 
 // `--first-hit auto`'s choice: whether the Z-buffer should beat tracing the

@@ -132,10 +132,10 @@ struct Agreement {
 
 // firstHits against traceClosest (a brute-force loop over the scene, equal
 // depths to the lower index) on the same rays, with either kind of atomics.
-Agreement compare(const Scene& scene, const std::vector<float>& xy, ZBufferAtomics atomics) {
+Agreement compare(const Scene& scene, const std::vector<float>& xy, ZBufferAtomics atomics, int pixel_spp) {
   RenderOptions options = RenderOptions::fromScene(scene);
   GpuScene gpu = flattenScene(scene, options);
-  std::vector<HitGpu> z = firstHits(sharedContext(), gpu, xy, atomics);
+  std::vector<HitGpu> z = firstHits(sharedContext(), gpu, xy, atomics, pixel_spp);
   std::vector<HitGpu> traced = traceClosest(sharedContext(), scene, cameraRays(gpu.camera, xy));
   Agreement a;
   a.samples = z.size();
@@ -150,11 +150,13 @@ Agreement compare(const Scene& scene, const std::vector<float>& xy, ZBufferAtomi
 }
 
 // Both kinds of atomics (the narrow one is what a device without 64-bit atomics runs).
-void checkAgreement(const Scene& scene, const std::vector<float>& xy) {
+// pixel_spp > 0: xy holds that many samples a pixel in pixel order (no pixel
+// corners), as the per-pixel sampling modes hand a batch to the pass.
+void checkAgreement(const Scene& scene, const std::vector<float>& xy, int pixel_spp = 0) {
   for (ZBufferAtomics atomics : {ZBufferAtomics::Wide, ZBufferAtomics::Narrow}) {
     if (atomics == ZBufferAtomics::Wide && !sharedContext().device().hasExtension("cl_khr_int64_extended_atomics"))
       continue;
-    Agreement a = compare(scene, xy, atomics);
+    Agreement a = compare(scene, xy, atomics, pixel_spp);
     INFO((atomics == ZBufferAtomics::Wide ? "64-bit" : "32-bit") << " atomics: " << a.samples << " samples, "
                                                                  << a.same_prim << " with the same primid, "
                                                                  << a.identical << " identical, " << a.hits << " hits");
@@ -252,6 +254,73 @@ TEST_CASE("first hits agree with traced rays on triangles with a vertex on the c
   }
   scene.objects.push_back(box({-20, -20, -30}, {20, 20, -25}));
   checkAgreement(scene, samplePoints(64, 48, 4, 3));
+}
+
+TEST_CASE("in pixel order, triangles facing away from the camera keep every sample where they lie nearest",
+          "[firsthit]") {
+  // In pixel order the pass rasterises triangles facing away from the camera
+  // after the rest, and skips a block's row where a bound says none of their
+  // tests could come nearer than every depth kept in it. The camera sits at
+  // the centre of a sphere of radius 3, so a row's kept depths are 3 except
+  // where plates facing the camera hide it at 1.5 to 2.5. Small triangles
+  // facing away lie square to their line of sight from 2e-5 to 2e-2 of that
+  // distance inside the sphere (and some just outside): a bound too high by
+  // a thousandth hides some of them. Slivers facing away run from behind the
+  // camera to beyond the sphere, where only the box of their two vertices in
+  // front is known.
+  Scene scene = emptyScene({0, 0, 0}, {0, 0, -1}, 20, 64, 48);
+  const Vec3 forward{0, 0, -1}, right{1, 0, 0}, up{0, 1, 0};
+  const double half = std::tan(10.0 * 3.14159265358979 / 180.0);  // of the film's width
+  scene.objects.push_back(sphere({0, 0, 0}, 3));
+  TestRng rng{11};
+  const auto facing = [](Object t, bool away) {
+    const Vec3 n = cross(t.vertices[1] - t.vertices[0], t.vertices[2] - t.vertices[0]);
+    if ((dot(Vec3{0, 0, 0} - t.vertices[0], n) > 0) == away) std::swap(t.vertices[1], t.vertices[2]);
+    return t;
+  };
+  const auto sight = [&] { return normalize(forward + right * rng.in(-half, half) + up * rng.in(-0.75, 0.75) * half); };
+  for (int k = 0; k < 12; ++k) {  // plates at 1.5 to 2.5
+    const Vec3 c = sight() * rng.in(1.5, 2.5);
+    const double w = rng.in(0.03, 0.12), h = rng.in(0.01, 0.06);
+    scene.objects.push_back(facing(triangle(c + Vec3{-w, -h, 0}, c + Vec3{w, -h, 0}, c + Vec3{w, h, 0}), false));
+    scene.objects.push_back(facing(triangle(c + Vec3{-w, -h, 0}, c + Vec3{w, h, 0}, c + Vec3{-w, h, 0}), false));
+  }
+  const size_t first_away = scene.objects.size();
+  for (int k = 0; k < 500; ++k) {
+    const Vec3 d = sight();
+    const double gap = std::pow(10.0, rng.in(-4.7, -1.7)) * (k % 5 == 0 ? -1 : 1);
+    const Vec3 c = d * (3 * (1 - gap));
+    const Vec3 u = normalize(cross(d, up)), v = cross(u, d);
+    const double size = rng.in(0.004, 0.03);
+    const auto corner = [&] { return c + u * rng.in(-size, size) + v * rng.in(-size, size); };
+    scene.objects.push_back(facing(triangle(corner(), corner(), corner()), true));
+  }
+  for (int k = 0; k < 30; ++k) {
+    const Vec3 behind{rng.in(-1, 1), rng.in(-1, 1), rng.in(0.1, 1)};
+    const Vec3 far = sight() * rng.in(4, 6);
+    scene.objects.push_back(facing(triangle(behind, far, far + rng.vec(-0.2, 0.2)), true));
+  }
+  for (int spp : {1, 4}) {
+    INFO(spp << " samples a pixel");
+    SamplingOptions random;
+    random.mode = AaMode::Random;
+    random.spp = spp;
+    const std::vector<float> xy = samplePositions(sharedContext(), random, 64, 48, 17);
+    checkAgreement(scene, xy, spp);
+    // The scene tests what it means to: triangles facing away win many
+    // samples, and the sphere and the plates keep some.
+    const GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
+    const std::vector<HitGpu> z = firstHits(sharedContext(), gpu, xy, ZBufferAtomics::Auto, spp);
+    size_t away = 0, sphere_kept = 0, plates = 0;
+    for (const HitGpu& h : z) {
+      away += h.prim >= static_cast<int>(first_away);
+      sphere_kept += h.prim == 0;
+      plates += h.prim > 0 && h.prim < static_cast<int>(first_away);
+    }
+    CHECK(away > z.size() / 10);
+    CHECK(sphere_kept > z.size() / 10);
+    CHECK(plates > z.size() / 50);
+  }
 }
 
 // The 3,851-triangle bunny filling the middle of an 80x60 film, a sphere beside it.
