@@ -4,7 +4,10 @@
  *   firsthit_count_cells, firsthit_sort_samples: the batch's sample positions
  *     sorted by film pixel (a counting sort; scan.cl in between), each stored
  *     with its primary ray's direction; positions that come in pixel order
- *     stay in it (firsthit_pixel_dirs stores their directions);
+ *     stay in it (firsthit_pixel_dirs stores their directions). The
+ *     directions are stored by component (dirs: x of the batch's count of
+ *     slots, then y, then z, then four floats of padding), so the raster loads
+ *     four neighbouring samples' x in one vload4;
  *   firsthit_bound: per primitive, the film pixels its conservative bounds touch
  *     (sampling/film_bounds.h), how many 8x8-pixel blocks they span, and
  *     whether it is a triangle facing away from the camera, with the least t
@@ -66,10 +69,12 @@ inline int firsthit_position_cell(__global const CameraGpu* camera, float x, flo
 }
 
 /* Sample (x, y) into `slot`: its primary ray's direction, and an empty entry. */
-inline void firsthit_place(__global const CameraGpu* camera, float x, float y, int slot, __global float4* sorted,
+inline void firsthit_place(__global const CameraGpu* camera, float x, float y, int slot, int count, __global float* dirs,
                            __global uint2* entries) {
   float3 d = camera_ray_dir(camera, x, y);
-  sorted[slot] = (float4)(d.x, d.y, d.z, 0.0f);
+  dirs[slot] = d.x;
+  dirs[count + slot] = d.y;
+  dirs[2 * count + slot] = d.z;
   entries[slot] = (uint2)(0xffffffffu);
 }
 
@@ -87,13 +92,13 @@ __kernel void firsthit_count_cells(__global const CameraGpu* camera, __global co
  * counting down), ready for the next batch. */
 __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global const float* xy, int in_xy, int count,
                                     __global const int* cell_start, __global int* cell_count,
-                                    __global float4* sorted, __global int* slot_of, __global uint2* entries) {
+                                    __global float* dirs, __global int* slot_of, __global uint2* entries) {
   int k = get_global_id(0);
   if (k >= count) return;
   float x = xy[2 * (in_xy + k)], y = xy[2 * (in_xy + k) + 1];
   int cell = firsthit_position_cell(camera, x, y);
   int slot = cell_start[cell] + atomic_dec(&cell_count[cell]) - 1;
-  firsthit_place(camera, x, y, slot, sorted, entries);
+  firsthit_place(camera, x, y, slot, count, dirs, entries);
   slot_of[k] = slot;
 }
 
@@ -108,7 +113,7 @@ __kernel void firsthit_sort_samples(__global const CameraGpu* camera, __global c
  * normalisation's scaling (never at a camera's own directions), go one sample
  * at a time. */
 __kernel void firsthit_pixel_dirs(__global const CameraGpu* camera, __global const float* xy, int in_xy, int count,
-                                  __global float4* sorted, __global uint2* entries) {
+                                  __global float* dirs, __global uint2* entries) {
   int first = get_global_id(0) * FIRSTHIT_DIR_LANES;
   if (first >= count) return;
   float8 dx, dy, dz;
@@ -119,19 +124,15 @@ __kernel void firsthit_pixel_dirs(__global const CameraGpu* camera, __global con
     float8 fx = (float8)(q[0], q[2], q[4], q[6], q[8], q[10], q[12], q[14]);
     float8 fy = (float8)(q[1], q[3], q[5], q[7], q[9], q[11], q[13], q[15]);
     if (camera_ray_dir8(camera, fx, fy, &dx, &dy, &dz)) {
-      float dxa[8], dya[8], dza[8];
-      vstore8(dx, 0, dxa);
-      vstore8(dy, 0, dya);
-      vstore8(dz, 0, dza);
-      for (int l = 0; l < FIRSTHIT_DIR_LANES; ++l) {
-        sorted[first + l] = (float4)(dxa[l], dya[l], dza[l], 0.0f);
-        entries[first + l] = (uint2)(0xffffffffu);
-      }
+      vstore8(dx, 0, dirs + first);
+      vstore8(dy, 0, dirs + count + first);
+      vstore8(dz, 0, dirs + 2 * count + first);
+      vstore16((uint16)(0xffffffffu), 0, (__global uint*)(entries + first));
       return;
     }
   }
   for (int k = first; k < min(first + FIRSTHIT_DIR_LANES, count); ++k)
-    firsthit_place(camera, xy[2 * (in_xy + k)], xy[2 * (in_xy + k) + 1], k, sorted, entries);
+    firsthit_place(camera, xy[2 * (in_xy + k)], xy[2 * (in_xy + k) + 1], k, count, dirs, entries);
 }
 
 /* The slots [begin, end) of the samples in pixels x0..x1 of film row y: in
@@ -362,7 +363,7 @@ inline void firsthit_keep(__global uint* entries, int slot, float t, int prim, i
 __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS,
                               __global const int* other_prims, __global const int4* cells, int pair_first,
                               int pair_end, __global const int2* pairs, int spp, int first, int count,
-                              __global const int* cell_start, __global const float4* sorted, int pass,
+                              __global const int* cell_start, __global const float* dirs, int pass,
                               __global const float* least_t, __global const uint* row_far, int cull,
                               __global uint* entries) {
   const Geometry g = GEOMETRY_INIT;
@@ -406,11 +407,9 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
       int2 run = firsthit_row_slots(x0, x1, y, width, spp, first, count, cell_start);
       int end = run.y;
       for (int n = run.x; n < end; n += 4) {
-        int last = end - 1;
-        float4 s0 = sorted[n], s1 = sorted[min(n + 1, last)], s2 = sorted[min(n + 2, last)],
-               s3 = sorted[min(n + 3, last)];
-        float4 dx = (float4)(s0.x, s1.x, s2.x, s3.x), dy = (float4)(s0.y, s1.y, s2.y, s3.y),
-               dz = (float4)(s0.z, s1.z, s2.z, s3.z);
+        /* Lanes past the run read the next slots, or the padding: their
+         * results are masked out below. */
+        float4 dx = vload4(0, dirs + n), dy = vload4(0, dirs + count + n), dz = vload4(0, dirs + 2 * count + n);
         float4 pvx = dy * tri.e2.z - dz * tri.e2.y;
         float4 pvy = dz * tri.e2.x - dx * tri.e2.z;
         float4 pvz = dx * tri.e2.y - dy * tri.e2.x;
@@ -432,9 +431,9 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
     for (int y = y0; y <= y1; ++y) {
       int2 run = firsthit_row_slots(x0, x1, y, width, spp, first, count, cell_start);
       for (int n = run.x; n < run.y; ++n) {
-        float4 s = sorted[n];
         float t, u, v;
-        if (prim_intersect(&g, prim, o, (float3)(s.x, s.y, s.z), time, 0.0f, PRISM_INF, &t, &u, &v))
+        if (prim_intersect(&g, prim, o, (float3)(dirs[n], dirs[count + n], dirs[2 * count + n]), time, 0.0f, PRISM_INF,
+                           &t, &u, &v))
           firsthit_keep(entries, n, t, prim, pass);
       }
     }
@@ -443,8 +442,8 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
 
 /* The hit of the sample in `slot`: the winner its entry names, by the
  * tracer's own prim_intersect (a miss when no primitive won). */
-inline HitGpu firsthit_slot_hit(const Geometry* g, __global const CameraGpu* camera, __global const float4* sorted,
-                                __global const uint* entries, int slot) {
+inline HitGpu firsthit_slot_hit(const Geometry* g, __global const CameraGpu* camera, __global const float* dirs,
+                                int batch, __global const uint* entries, int slot) {
 #ifdef PRISM_ZBUFFER_WIDE
   int prim = (int)(((__global const ulong*)entries)[slot] & 0xffffffffu);
 #else
@@ -456,10 +455,9 @@ inline HitGpu firsthit_slot_hit(const Geometry* g, __global const CameraGpu* cam
   hit.u = 0.0f;
   hit.v = 0.0f;
   if (prim >= 0) {
-    float4 s = sorted[slot];
+    float3 d = (float3)(dirs[slot], dirs[batch + slot], dirs[2 * batch + slot]);
     float t, u, v;
-    if (prim_intersect(g, prim, load3g(camera->origin), (float3)(s.x, s.y, s.z), camera->shutter_open, 0.0f,
-                       PRISM_INF, &t, &u, &v)) {
+    if (prim_intersect(g, prim, load3g(camera->origin), d, camera->shutter_open, 0.0f, PRISM_INF, &t, &u, &v)) {
       hit.t = t;
       hit.prim = prim;
       hit.u = u;
@@ -473,11 +471,11 @@ inline HitGpu firsthit_slot_hit(const Geometry* g, __global const CameraGpu* cam
  * whose slots are slot_of's (a sorted batch) or, in_order, the samples' own
  * numbers (a batch in pixel order). */
 __kernel void firsthit_resolve(__global const CameraGpu* camera, GEOMETRY_KERNEL_PARAMS, int count, int in_order,
-                               __global const int* slot_of, __global const float4* sorted,
+                               __global const int* slot_of, __global const float* dirs, int batch,
                                __global const uint* entries, int first, __global HitGpu* hits) {
   const Geometry g = GEOMETRY_INIT;
   int k = get_global_id(0);
   if (k >= count) return;
   int slot = in_order ? first + k : slot_of[first + k];
-  hits[k] = firsthit_slot_hit(&g, camera, sorted, entries, slot);
+  hits[k] = firsthit_slot_hit(&g, camera, dirs, batch, entries, slot);
 }

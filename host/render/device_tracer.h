@@ -57,10 +57,10 @@ class DeviceTracer {
   // not grow with the number of light samples. A constant, like kSliceRays.
   static constexpr size_t kShadowSlots = 4 * kSliceRays;
   // Samples the first-hit pass rasterises at once (a whole number of slices),
-  // and its device bytes per sample (ray direction 16, depth + id 8, a sorted
+  // and its device bytes per sample (ray direction 12, depth + id 8, a sorted
   // batch's slots 4, positions 8 where the render has no frame-wide copy of them).
   static constexpr size_t kZBufferBatch = 64 * kSliceRays;
-  static constexpr size_t kZBufferBytesPerSample = 36;
+  static constexpr size_t kZBufferBytesPerSample = 32;
 
   explicit DeviceTracer(Context& context);
   ~DeviceTracer();

@@ -114,7 +114,11 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
 
   // The samples' directions and empty entries, in cell order or, where they
   // come in pixel order, in that order (kernels/firsthit.cl).
-  m_sorted.reserve(m_context, count * 4 * sizeof(float));
+  // Directions by component (x of every slot, then y, then z), and four
+  // floats of padding that the raster's last lanes may read.
+  m_dirs.reserve(m_context, (3 * count + 4) * sizeof(float));
+  const float zero = 0.0f;
+  m_dirs.fill(&zero, sizeof zero, 4 * sizeof(float), 3 * count * sizeof(float));
   m_entries.reserve(m_context, count * 2 * sizeof(std::uint32_t));
   if (pixel_spp > 0) {
     // Eight samples a work-item (kFirstHitDirLanes, as firsthit_pixel_dirs takes them).
@@ -123,7 +127,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(xy)
         .arg(in_xy)
         .arg(n)
-        .arg(m_sorted)
+        .arg(m_dirs)
         .arg(m_entries)
         .run((count + kFirstHitDirLanes - 1) / kFirstHitDirLanes);
   } else {
@@ -137,7 +141,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(n)
         .arg(m_cell_start)
         .arg(m_cell_count)
-        .arg(m_sorted)
+        .arg(m_dirs)
         .arg(m_slot_of)
         .arg(m_entries)
         .run(count);
@@ -201,7 +205,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(at)
         .arg(n)
         .arg(m_cell_start)
-        .arg(m_sorted)
+        .arg(m_dirs)
         .arg(static_cast<cl_int>(pass))
         .arg(m_least_t)
         .arg(m_row_far)
@@ -239,7 +243,8 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
       .arg(static_cast<cl_int>(count))
       .arg(static_cast<cl_int>(m_pixel_spp > 0))  // in pixel order, sample k of the batch is in slot k
       .arg(m_slot_of)
-      .arg(m_sorted)
+      .arg(m_dirs)
+      .arg(static_cast<cl_int>(m_batch))
       .arg(m_entries)
       .arg(static_cast<cl_int>(first))
       .arg(hits)
@@ -257,12 +262,12 @@ void FirstHitPass::run(const GeometryBuffers& geometry, const Buffer& xy, size_t
 }
 
 size_t FirstHitPass::batchBytes() const {
-  return m_sorted.bytes() + m_slot_of.bytes() + m_entries.bytes();
+  return m_dirs.bytes() + m_slot_of.bytes() + m_entries.bytes();
 }
 
 size_t FirstHitPass::deviceBytes() const {
   size_t bytes = 0;
-  for (const Buffer* b : {&m_camera, &m_other_prims, &m_other_boxes, &m_cell_count, &m_cell_start, &m_sorted, &m_slot_of,
+  for (const Buffer* b : {&m_camera, &m_other_prims, &m_other_boxes, &m_cell_count, &m_cell_start, &m_dirs, &m_slot_of,
                           &m_entries, &m_cells, &m_block_count, &m_pair_start, &m_pairs, &m_least_t, &m_row_far})
     bytes += b->bytes();
   return bytes;

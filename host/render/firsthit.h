@@ -77,7 +77,7 @@ class FirstHitPass {
   // Cells of the film's 8x8 blocks, the last row and column of blocks padded.
   std::size_t cellCount() const;
 
-  Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_sorted, m_slot_of, m_entries,
+  Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_dirs, m_slot_of, m_entries,
       m_cells, m_block_count, m_pair_start, m_pairs, m_least_t, m_row_far;
 };
 
