@@ -94,8 +94,10 @@ std::vector<HitGpu> RayQueryEngine::runExtend(const std::vector<RayGpu>& rays, d
   std::vector<HitGpu> hits(rays.size());
   double seconds = 0;
   const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
-  Buffer ray_buffer(m_context, batch * sizeof(RayGpu));
-  Buffer hit_buffer(m_context, batch * sizeof(HitGpu));
+  Buffer& ray_buffer = m_ray_buffer;
+  Buffer& hit_buffer = m_hit_buffer;
+  ray_buffer.reserve(m_context, batch * sizeof(RayGpu));
+  hit_buffer.reserve(m_context, batch * sizeof(HitGpu));
   for (std::size_t first = 0; first < rays.size(); first += batch) {
     const std::size_t n = std::min(batch, rays.size() - first);
     ray_buffer.write(rays.data() + first, n * sizeof(RayGpu));
@@ -116,8 +118,10 @@ std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, b
   std::vector<float> carried(rays.size());
   double seconds = 0;
   const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
-  Buffer ray_buffer(m_context, batch * sizeof(RayGpu));
-  Buffer out(m_context, batch * sizeof(ContributionGpu));
+  Buffer& ray_buffer = m_ray_buffer;
+  Buffer& out = m_contribution_buffer;
+  ray_buffer.reserve(m_context, batch * sizeof(RayGpu));
+  out.reserve(m_context, batch * sizeof(ContributionGpu));
   const Buffer no_materials;  // NULL in the kernel: every primitive opaque
   std::vector<RayGpu> unit(batch);
   std::vector<ContributionGpu> c(batch);

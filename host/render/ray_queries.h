@@ -41,7 +41,8 @@ struct QueryRay {
 static_assert(sizeof(QueryRay) == 32, "QueryRay is the 32-byte record of prism trace");
 
 // A structure built over a fixed set of primitives, uploaded, and its two
-// kernels compiled and warmed up, ready for any number of ray batches. The
+// kernels compiled and warmed up, ready for any number of ray batches (one
+// query at a time: the batch buffers are the engine's). The
 // hit record is HitGpu, the 16-byte record `prism trace` writes: t (+inf on a
 // miss), prim (-1 on a miss), u and v (barycentrics of vertices 1 and 2).
 class RayQueryEngine {
@@ -101,6 +102,11 @@ class RayQueryEngine {
   AccelBuffers m_buffers;
   RayKernel m_extend, m_occlude;
   double m_compile_seconds = 0;
+  // A batch's rays and answers, kept from query to query (as large as the
+  // largest batch asked, until the engine goes): a buffer made for each query
+  // is fresh memory for the kernel to fault in page by page (about 1.5 us a
+  // page on a CPU device), which the trace time counted.
+  Buffer m_ray_buffer, m_hit_buffer, m_contribution_buffer;
 };
 
 // The 64-byte queue record of a query ray (weight 1, primary, pixel = index).
