@@ -190,8 +190,9 @@ PRISM_HOT void firsthit_put_cells(const FilmProjector* c, const FilmHull* hull, 
 
 /* A lower bound on every t the ray tests of firsthit_raster can return for a
  * triangle (edges e1, e2 from v0; tv = o - v0), eight triangles in lanes, over
- * the samples inside film box x0..x1, y0..y1 (grown by a pixel and a half,
- * past the pixels the box touches). t = e2.qv / det with e2.qv = tv.(e1 x e2),
+ * the samples inside film box x0..x1, y0..y1. Only the tests that accept a hit
+ * return a t, and their rays lie inside the box (sampling/film_bounds.h); it
+ * is grown by a pixel and a half all the same, past every pixel it touches. t = e2.qv / det with e2.qv = tv.(e1 x e2),
  * and det = d.(e2 x e1), d = w / |w| for the unnormalised direction w = f + X r
  * + Y u. w.(e2 x e1) is linear in X and Y, so its largest size over the box is
  * at a corner; |w| is at least w.c / |c| for the box's central w = c, also
@@ -219,14 +220,18 @@ PRISM_HOT float8 firsthit_least_t8(const FilmProjector* c, float8 tx, float8 ty,
   float8 fc = c->f.x * cx + c->f.y * cy + c->f.z * cz, rc = c->r.x * cx + c->r.y * cy + c->r.z * cz,
          uc = c->u.x * cx + c->u.y * cy + c->u.z * cz;
   float8 most = (float8)(0.0f), least_w = (float8)(INFINITY);
+  int8 finite = (int8)(-1); /* fmax and fmin pass a NaN by */
   for (int i = 0; i < 4; ++i) {
     float8 X = xs[i & 1], Y = ys[i >> 1];
     float8 w1 = fn + (1.0f + fabs(X)) * rn + (1.0f + fabs(Y)) * un; /* >= |w|, with X's rounding */
-    most = fmax(most, fabs(fm + X * rm + Y * um) + 1e-4f * w1 * size);
-    least_w = fmin(least_w, (fc + X * rc + Y * uc) / c_len - 1e-4f * w1);
+    float8 corner_det = fabs(fm + X * rm + Y * um) + 1e-4f * w1 * size;
+    float8 corner_w = (fc + X * rc + Y * uc) / c_len - 1e-4f * w1;
+    finite &= isfinite(corner_det) & isfinite(corner_w);
+    most = fmax(most, corner_det);
+    least_w = fmin(least_w, corner_w);
   }
   float8 t = qv / (most / least_w + 1e-4f * size) * 0.9999f;
-  return select((float8)(0.0f), t, (least_w > 0.0f) & (t > 0.0f) & (t < INFINITY));
+  return select((float8)(0.0f), t, finite & (least_w > 0.0f) & (t > 0.0f) & (t < INFINITY));
 }
 
 /* block_count[item]: the blocks its cells span (0 when culled); the host turns
@@ -276,8 +281,11 @@ __kernel void firsthit_bound(__global const CameraGpu* camera, GEOMETRY_KERNEL_P
     film_hull_add8(&c, vload8(0, v[i][0]), vload8(0, v[i][1]), vload8(0, v[i][2]), in, &behind, &near, &front,
                        &x0, &y0, &x1, &y1);
   /* Which way each triangle faces the camera: the sign of (o - v0).(e1 x e2),
-   * the numerator of every t its tests compute (firsthit_raster's e2_qv);
-   * and, for those facing away, the least t their tests can return. */
+   * the numerator of every t its tests compute (firsthit_raster's e2_qv, there
+   * in another order of operations: a triangle seen edge-on may fall in either
+   * class, which changes only the speed); and, for those facing away, the
+   * least t their tests can return. A mesh wound inward is classed the other
+   * way round: the same hits, no time saved. */
   float8 tx = (float8)(c.o.x) - vload8(0, v[0][0]), ty = (float8)(c.o.y) - vload8(0, v[0][1]),
          tz = (float8)(c.o.z) - vload8(0, v[0][2]);
   float8 ax = vload8(0, v[1][0]) - vload8(0, v[0][0]), ay = vload8(0, v[1][1]) - vload8(0, v[0][1]),
@@ -385,12 +393,13 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
    * bits read as NaN: never skipped), and the whole pair where that holds of
    * every row it spans. */
   float least = 0.0f;
-  __global const uint* rows = row_far;
+  __global const uint* rows = row_far; /* the block's, row y at rows[y - top] */
+  const int top = by * FIRSTHIT_BLOCK;
   if (cull) {
     least = least_t[pair.x];
-    rows = row_far + FIRSTHIT_BLOCK * (by * ((width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK) + bx) - by * FIRSTHIT_BLOCK;
+    rows = row_far + FIRSTHIT_BLOCK * (by * ((width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK) + bx);
     bool needed = false;
-    for (int y = y0; y <= y1; ++y) needed |= !(least > as_float(rows[y]));
+    for (int y = y0; y <= y1; ++y) needed |= !(least > as_float(rows[y - top]));
     if (!needed) return;
   }
   float3 o = load3g(camera->origin);
@@ -403,7 +412,7 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
     TriangleFromOrigin tri = triangle_from_origin(o, v0, v1, v2);
     const float e2_qv = tri_dot(tri.e2, tri.qv);
     for (int y = y0; y <= y1; ++y) {
-      if (cull && least > as_float(rows[y])) continue;
+      if (cull && least > as_float(rows[y - top])) continue;
       int2 run = firsthit_row_slots(x0, x1, y, width, spp, first, count, cell_start);
       int end = run.y;
       for (int n = run.x; n < end; n += 4) {

@@ -73,6 +73,12 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
       other_boxes.insert(other_boxes.end(), {-kInf, -kInf, -kInf, kInf, kInf, kInf});
   }
   m_others = other_prims.size();
+  // The pairs' counts: two an item (facing the camera or away), items being
+  // the primitives and, once more, those bounded by their host boxes.
+  if (2 * (m_prims + m_others) >= static_cast<size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw std::invalid_argument(
+        "first hit zbuffer: too many primitives (twice the primitives plus twice the non-triangles must stay below "
+        "2^31); use --first-hit trace");
   upload(m_context, m_other_prims, other_prims);
   upload(m_context, m_other_boxes, other_boxes);
 
@@ -223,7 +229,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
       m_context.launch(m_row_far_kernel)
           .arg(static_cast<cl_int>(m_width))
           .arg(static_cast<cl_int>(m_height))
-          .arg(static_cast<cl_int>(pixel_spp))
+          .arg(static_cast<cl_int>(std::max(pixel_spp, 0)))
           .arg(at)
           .arg(n)
           .arg(m_cell_start)

@@ -109,7 +109,7 @@ class RayQueryEngine {
   Buffer m_ray_buffer, m_hit_buffer, m_contribution_buffer;
 };
 
-// The 64-byte queue record of a query ray (weight 1, primary, pixel = index).
+// The 80-byte queue record of a query ray (weight 1, primary, pixel = index).
 std::vector<RayGpu> toRayGpu(const std::vector<QueryRay>& rays);
 
 // One batch of rays through a structure built for it: what `prism trace` and

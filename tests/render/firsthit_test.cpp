@@ -256,19 +256,19 @@ TEST_CASE("first hits agree with traced rays on triangles with a vertex on the c
   checkAgreement(scene, samplePoints(64, 48, 4, 3));
 }
 
-TEST_CASE("in pixel order, triangles facing away from the camera keep every sample where they lie nearest",
-          "[firsthit]") {
-  // In pixel order the pass rasterises triangles facing away from the camera
-  // after the rest, and skips a block's row where a bound says none of their
+TEST_CASE("triangles facing away from the camera keep every sample where they lie nearest", "[firsthit]") {
+  // The pass rasterises triangles facing away from the camera after the rest, and skips a block's row where a bound says none of their
   // tests could come nearer than every depth kept in it. The camera sits at
   // the centre of a sphere of radius 3, so a row's kept depths are 3 except
   // where plates facing the camera hide it at 1.5 to 2.5. Small triangles
   // facing away lie square to their line of sight from 2e-5 to 2e-2 of that
   // distance inside the sphere (and some just outside): a bound too high by
-  // a thousandth hides some of them. Slivers facing away run from behind the
-  // camera to beyond the sphere, where only the box of their two vertices in
-  // front is known.
-  Scene scene = emptyScene({0, 0, 0}, {0, 0, -1}, 20, 64, 48);
+  // half a percent hides some of them; others lean away from the camera, so
+  // that their t is least at one edge of their film box. Slivers facing away
+  // run from behind the camera to beyond the sphere, where only the box of
+  // their two vertices in front is known. The film is not a whole number of
+  // 8x8 blocks; the samples go in pixel order and, sorted, in cell order.
+  Scene scene = emptyScene({0, 0, 0}, {0, 0, -1}, 20, 61, 45);
   const Vec3 forward{0, 0, -1}, right{1, 0, 0}, up{0, 1, 0};
   const double half = std::tan(10.0 * 3.14159265358979 / 180.0);  // of the film's width
   scene.objects.push_back(sphere({0, 0, 0}, 3));
@@ -295,6 +295,14 @@ TEST_CASE("in pixel order, triangles facing away from the camera keep every samp
     const auto corner = [&] { return c + u * rng.in(-size, size) + v * rng.in(-size, size); };
     scene.objects.push_back(facing(triangle(corner(), corner(), corner()), true));
   }
+  for (int k = 0; k < 60; ++k) {
+    const Vec3 d = sight();
+    const Vec3 c = d * (3 * (1 - std::pow(10.0, rng.in(-3.0, -1.5))));
+    const Vec3 u = normalize(cross(d, up)), v = cross(u, d);
+    const double s = rng.in(0.02, 0.06), tilt = rng.in(2.0, 6.0);
+    const Vec3 side = k % 2 ? u : v, other = k % 2 ? v : u;
+    scene.objects.push_back(facing(triangle(c - other * s, c + other * s, c + side * s + d * (s * tilt)), true));
+  }
   for (int k = 0; k < 30; ++k) {
     const Vec3 behind{rng.in(-1, 1), rng.in(-1, 1), rng.in(0.1, 1)};
     const Vec3 far = sight() * rng.in(4, 6);
@@ -305,8 +313,9 @@ TEST_CASE("in pixel order, triangles facing away from the camera keep every samp
     SamplingOptions random;
     random.mode = AaMode::Random;
     random.spp = spp;
-    const std::vector<float> xy = samplePositions(sharedContext(), random, 64, 48, 17);
+    const std::vector<float> xy = samplePositions(sharedContext(), random, 61, 45, 17);
     checkAgreement(scene, xy, spp);
+    checkAgreement(scene, xy, 0);
     // The scene tests what it means to: triangles facing away win many
     // samples, and the sphere and the plates keep some.
     const GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
