@@ -94,20 +94,18 @@ std::vector<HitGpu> RayQueryEngine::runExtend(const std::vector<RayGpu>& rays, d
   std::vector<HitGpu> hits(rays.size());
   double seconds = 0;
   const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
-  Buffer& ray_buffer = m_ray_buffer;
-  Buffer& hit_buffer = m_hit_buffer;
-  ray_buffer.reserve(m_context, batch * sizeof(RayGpu));
-  hit_buffer.reserve(m_context, batch * sizeof(HitGpu));
+  m_ray_buffer.reserve(m_context, batch * sizeof(RayGpu));
+  m_hit_buffer.reserve(m_context, batch * sizeof(HitGpu));
   for (std::size_t first = 0; first < rays.size(); first += batch) {
     const std::size_t n = std::min(batch, rays.size() - first);
-    ray_buffer.write(rays.data() + first, n * sizeof(RayGpu));
+    m_ray_buffer.write(rays.data() + first, n * sizeof(RayGpu));
     auto start = Clock::now();
     KernelLaunch launch = m_extend.launch(packets);
-    launch.arg(ray_buffer).arg(static_cast<int>(n));
-    m_buffers.bind(launch, m_geometry_buffers).arg(hit_buffer).run(m_extend.workItems(n, packets));
+    launch.arg(m_ray_buffer).arg(static_cast<int>(n));
+    m_buffers.bind(launch, m_geometry_buffers).arg(m_hit_buffer).run(m_extend.workItems(n, packets));
     m_context.finish();
     seconds += secondsSince(start);
-    hit_buffer.read(hits.data() + first, n * sizeof(HitGpu));
+    m_hit_buffer.read(hits.data() + first, n * sizeof(HitGpu));
   }
   if (trace_seconds) *trace_seconds = seconds;
   return hits;
@@ -118,27 +116,25 @@ std::vector<float> RayQueryEngine::runOcclude(const std::vector<RayGpu>& rays, b
   std::vector<float> carried(rays.size());
   double seconds = 0;
   const std::size_t batch = std::min(kBatchRays, std::max<std::size_t>(rays.size(), 1));
-  Buffer& ray_buffer = m_ray_buffer;
-  Buffer& out = m_contribution_buffer;
-  ray_buffer.reserve(m_context, batch * sizeof(RayGpu));
-  out.reserve(m_context, batch * sizeof(ContributionGpu));
+  m_ray_buffer.reserve(m_context, batch * sizeof(RayGpu));
+  m_contribution_buffer.reserve(m_context, batch * sizeof(ContributionGpu));
   const Buffer no_materials;  // NULL in the kernel: every primitive opaque
   std::vector<RayGpu> unit(batch);
   std::vector<ContributionGpu> c(batch);
   for (std::size_t first = 0; first < rays.size(); first += batch) {
     const std::size_t n = std::min(batch, rays.size() - first);
     for (std::size_t i = 0; i < n; ++i) unit[i] = unitRay(rays[first + i]);
-    ray_buffer.write(unit.data(), n * sizeof(RayGpu));
+    m_ray_buffer.write(unit.data(), n * sizeof(RayGpu));
     auto start = Clock::now();
     KernelLaunch launch = m_occlude.launch(packets);
-    launch.arg(ray_buffer).arg(static_cast<int>(n));
+    launch.arg(m_ray_buffer).arg(static_cast<int>(n));
     m_buffers.bind(launch, m_geometry_buffers)
         .arg(with_materials ? m_material_buffer : no_materials)
-        .arg(out)
+        .arg(m_contribution_buffer)
         .run(m_occlude.workItems(n, packets));
     m_context.finish();
     seconds += secondsSince(start);
-    out.read(c.data(), n * sizeof(ContributionGpu));
+    m_contribution_buffer.read(c.data(), n * sizeof(ContributionGpu));
     for (std::size_t i = 0; i < n; ++i) carried[first + i] = c[i].r;
   }
   if (trace_seconds) *trace_seconds = seconds;
