@@ -52,13 +52,15 @@
 #define FIRSTHIT_BOUND_LANES 8 /* primitives a work-item of firsthit_bound (host: kFirstHitBoundLanes) */
 #define FIRSTHIT_DIR_LANES 8 /* samples a work-item of firsthit_pixel_dirs (host: kFirstHitDirLanes) */
 
+/* The film's width in 8x8 blocks (the last column of blocks may be partial). */
+inline int firsthit_blocks_x(int width) { return (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK; }
+
 /* Cells (pixels) are numbered block by block, 8x8 pixels each, row by row
  * inside a block, so the samples of a block lie together once sorted by cell:
  * a (primitive, block) pair reads one run of them per row of the block, as it
  * does of samples in pixel order. Blocks past the film's edge hold empty cells. */
 inline int firsthit_cell(int x, int y, int width) {
-  int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
-  int block = (y / FIRSTHIT_BLOCK) * blocks_x + x / FIRSTHIT_BLOCK;
+  int block = (y / FIRSTHIT_BLOCK) * firsthit_blocks_x(width) + x / FIRSTHIT_BLOCK;
   return block * FIRSTHIT_BLOCK * FIRSTHIT_BLOCK + (y % FIRSTHIT_BLOCK) * FIRSTHIT_BLOCK + x % FIRSTHIT_BLOCK;
 }
 
@@ -333,12 +335,16 @@ __kernel void firsthit_emit(int items, __global const int4* cells, __global cons
 
 /* The farthest kept depth of the batch's samples in each row of each 8x8
  * block (row_far[8 * block + row]), as t's bits (all bits set while a sample
- * is empty; 0 for a row without samples), for firsthit_raster's cull. */
-__kernel void firsthit_row_far(int width, int height, int spp, int first, int count, __global const int* cell_start,
-                               __global const uint* entries, __global uint* row_far) {
-  int blocks_x = (width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK, blocks_y = (height + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK;
-  int k = get_global_id(0);
-  if (k >= blocks_x * blocks_y) return;
+ * is empty; 0 for a row without samples), for firsthit_raster's cull. One
+ * work-item a block of block rows by_first..by_last: a batch in pixel order
+ * holds samples only in the block rows of its pixels, and the raster reads
+ * no other (firsthit_bound cuts its pairs to them). */
+__kernel void firsthit_row_far(int width, int height, int by_first, int by_last, int spp, int first, int count,
+                               __global const int* cell_start, __global const uint* entries,
+                               __global uint* row_far) {
+  int blocks_x = firsthit_blocks_x(width);
+  int k = by_first * blocks_x + get_global_id(0);
+  if (k >= (by_last + 1) * blocks_x) return;
   int bx = k % blocks_x, by = k / blocks_x;
   int x0 = bx * FIRSTHIT_BLOCK, x1 = min(width, x0 + FIRSTHIT_BLOCK) - 1;
   for (int row = 0; row < FIRSTHIT_BLOCK; ++row) {
@@ -397,7 +403,7 @@ __kernel void firsthit_raster(__global const CameraGpu* camera, GEOMETRY_KERNEL_
   const int top = by * FIRSTHIT_BLOCK;
   if (cull) {
     least = least_t[pair.x];
-    rows = row_far + FIRSTHIT_BLOCK * (by * ((width + FIRSTHIT_BLOCK - 1) / FIRSTHIT_BLOCK) + bx);
+    rows = row_far + FIRSTHIT_BLOCK * (by * firsthit_blocks_x(width) + bx);
     bool needed = false;
     for (int y = y0; y <= y1; ++y) needed |= !(least > as_float(rows[y - top]));
     if (!needed) return;

@@ -163,6 +163,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
     row_last = std::min(row_last, (first + count - 1) / spp / width);
   }
   const size_t items = m_prims + m_others;
+  const size_t blocks_x = (static_cast<size_t>(m_width) + kBlock - 1) / kBlock;
   KernelLaunch bound = m_context.launch(m_bound);
   bound.arg(m_camera);
   geometry.bind(bound)
@@ -229,13 +230,15 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
       m_context.launch(m_row_far_kernel)
           .arg(static_cast<cl_int>(m_width))
           .arg(static_cast<cl_int>(m_height))
+          .arg(static_cast<cl_int>(row_first / kBlock))
+          .arg(static_cast<cl_int>(row_last / kBlock))
           .arg(static_cast<cl_int>(std::max(pixel_spp, 0)))
           .arg(at)
           .arg(n)
           .arg(m_cell_start)
           .arg(m_entries)
           .arg(m_row_far)
-          .run(cells / (kBlock * kBlock));
+          .run((row_last / kBlock - row_first / kBlock + 1) * blocks_x);
     raster(pass, front, total, true);
   }
 }

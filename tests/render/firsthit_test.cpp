@@ -329,6 +329,27 @@ TEST_CASE("triangles facing away from the camera keep every sample where they li
     CHECK(away > z.size() / 10);
     CHECK(sphere_kept > z.size() / 10);
     CHECK(plates > z.size() / 50);
+
+    // The frame in three batches of 15 rows on one pass, as a render hands it
+    // a film too large for one batch, the middle one last: its cull must read
+    // the depths of its own rows, not those its neighbours left in the block
+    // rows it shares with them (0 in rows they had no samples in).
+    Context& context = sharedContext();
+    GeometryBuffers geometry(context, gpu);
+    Buffer positions(context, xy.size() * sizeof(float)), hits(context, z.size() * sizeof(HitGpu));
+    positions.writeVector(xy);
+    FirstHitPass pass(context);
+    pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
+    std::vector<HitGpu> batched(z.size());
+    const size_t rows15 = 15 * 61 * static_cast<size_t>(spp);
+    for (size_t first : {size_t{0}, 2 * rows15, rows15}) {
+      const size_t count = std::min(rows15, z.size() - first);
+      pass.rasterize(geometry, positions, 0, first, count, spp);
+      pass.resolve(geometry, 0, count, hits);
+      hits.read(batched.data() + first, count * sizeof(HitGpu));
+    }
+    REQUIRE(batched.size() == z.size());
+    CHECK(std::memcmp(batched.data(), z.data(), z.size() * sizeof(HitGpu)) == 0);
   }
 }
 
