@@ -334,9 +334,9 @@ __kernel void firsthit_emit(int items, __global const int4* cells, __global cons
 }
 
 /* The farthest kept depth of the batch's samples in each row of each 8x8
- * block (row_far[8 * block + row]), as t's bits (all bits set while a sample
- * is empty; 0 for a row without samples), for firsthit_raster's cull. One
- * work-item a block of block rows by_first..by_last: a batch in pixel order
+ * block of block rows by_first..by_last (row_far[8 * block + row]), as t's
+ * bits (all bits set while a sample is empty; 0 for a row without samples),
+ * for firsthit_raster's cull. One work-item a block: a batch in pixel order
  * holds samples only in the block rows of its pixels, and the raster reads
  * no other (firsthit_bound cuts its pairs to them). */
 __kernel void firsthit_row_far(int width, int height, int by_first, int by_last, int spp, int first, int count,

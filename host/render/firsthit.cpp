@@ -99,7 +99,11 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   // writes all eight lanes.
   m_least_t = Buffer(m_context, ((m_prims + kFirstHitBoundLanes - 1) / kFirstHitBoundLanes * kFirstHitBoundLanes + 1) *
                                     sizeof(float));
+  // Each batch's firsthit_row_far writes only the block rows of its pixels;
+  // rows no batch has written read as holding no samples.
   m_row_far = Buffer(m_context, cells / kBlock * sizeof(std::uint32_t));
+  const std::uint32_t no_samples = 0;
+  m_row_far.fill(&no_samples, sizeof no_samples, cells / kBlock * sizeof(std::uint32_t));
   m_batch = 0;
   m_stats = FirstHitStats{};
   m_stats.others = m_others;
@@ -163,7 +167,6 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
     row_last = std::min(row_last, (first + count - 1) / spp / width);
   }
   const size_t items = m_prims + m_others;
-  const size_t blocks_x = (static_cast<size_t>(m_width) + kBlock - 1) / kBlock;
   KernelLaunch bound = m_context.launch(m_bound);
   bound.arg(m_camera);
   geometry.bind(bound)
@@ -226,6 +229,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
       continue;
     }
     raster(pass, 0, front, false);
+    const size_t blocks_x = (static_cast<size_t>(m_width) + kBlock - 1) / kBlock;
     if (pass == 0)
       m_context.launch(m_row_far_kernel)
           .arg(static_cast<cl_int>(m_width))

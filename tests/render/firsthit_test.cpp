@@ -11,6 +11,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "accel/prim_ref.h"
@@ -330,26 +331,31 @@ TEST_CASE("triangles facing away from the camera keep every sample where they li
     CHECK(sphere_kept > z.size() / 10);
     CHECK(plates > z.size() / 50);
 
-    // The frame in three batches of 15 rows on one pass, as a render hands it
-    // a film too large for one batch, the middle one last: its cull must read
-    // the depths of its own rows, not those its neighbours left in the block
-    // rows it shares with them (0 in rows they had no samples in).
+    // The frame in three batches on one pass, cut mid-row (and mid-pixel at
+    // 4 spp) as a render cuts its batches wherever 2^22 samples end, the
+    // middle one last: its cull must read the depths of its own rows, not
+    // those its neighbours left in the block rows it shares with them (0 in
+    // rows they had no samples in). With both kinds of atomics.
     Context& context = sharedContext();
     GeometryBuffers geometry(context, gpu);
     Buffer positions(context, xy.size() * sizeof(float)), hits(context, z.size() * sizeof(HitGpu));
     positions.writeVector(xy);
-    FirstHitPass pass(context);
-    pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
-    std::vector<HitGpu> batched(z.size());
-    const size_t rows15 = 15 * 61 * static_cast<size_t>(spp);
-    for (size_t first : {size_t{0}, 2 * rows15, rows15}) {
-      const size_t count = std::min(rows15, z.size() - first);
-      pass.rasterize(geometry, positions, 0, first, count, spp);
-      pass.resolve(geometry, 0, count, hits);
-      hits.read(batched.data() + first, count * sizeof(HitGpu));
+    const size_t row = 61 * static_cast<size_t>(spp), cut1 = 15 * row - 5, cut2 = 30 * row + 7;
+    REQUIRE(45 * row == z.size());
+    const std::pair<size_t, size_t> batches[] = {{0, cut1}, {cut2, z.size()}, {cut1, cut2}};
+    for (ZBufferAtomics atomics : {ZBufferAtomics::Wide, ZBufferAtomics::Narrow}) {
+      if (atomics == ZBufferAtomics::Wide && !context.device().hasExtension("cl_khr_int64_extended_atomics")) continue;
+      INFO((atomics == ZBufferAtomics::Wide ? "64-bit" : "32-bit") << " atomics, in three batches");
+      FirstHitPass pass(context, atomics);
+      pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
+      std::vector<HitGpu> batched(z.size());
+      for (const auto& [first, end] : batches) {
+        pass.rasterize(geometry, positions, 0, first, end - first, spp);
+        pass.resolve(geometry, 0, end - first, hits);
+        hits.read(batched.data() + first, (end - first) * sizeof(HitGpu));
+      }
+      CHECK(std::memcmp(batched.data(), z.data(), z.size() * sizeof(HitGpu)) == 0);
     }
-    REQUIRE(batched.size() == z.size());
-    CHECK(std::memcmp(batched.data(), z.data(), z.size() * sizeof(HitGpu)) == 0);
   }
 }
 
