@@ -229,7 +229,6 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
       continue;
     }
     raster(pass, 0, front, false);
-    const size_t blocks_x = (static_cast<size_t>(m_width) + kBlock - 1) / kBlock;
     if (pass == 0)
       m_context.launch(m_row_far_kernel)
           .arg(static_cast<cl_int>(m_width))
@@ -242,7 +241,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
           .arg(m_cell_start)
           .arg(m_entries)
           .arg(m_row_far)
-          .run((row_last / kBlock - row_first / kBlock + 1) * blocks_x);
+          .run((row_last / kBlock - row_first / kBlock + 1) * blocksX());
     raster(pass, front, total, true);
   }
 }
@@ -264,9 +263,10 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
       .run(count);
 }
 
+size_t FirstHitPass::blocksX() const { return (static_cast<size_t>(m_width) + kBlock - 1) / kBlock; }
+
 size_t FirstHitPass::cellCount() const {
-  return (static_cast<size_t>(m_width) + kBlock - 1) / kBlock * ((static_cast<size_t>(m_height) + kBlock - 1) / kBlock) *
-         kBlock * kBlock;
+  return blocksX() * ((static_cast<size_t>(m_height) + kBlock - 1) / kBlock) * kBlock * kBlock;
 }
 
 void FirstHitPass::run(const GeometryBuffers& geometry, const Buffer& xy, size_t count, Buffer& hits, int pixel_spp) {

@@ -74,7 +74,9 @@ class FirstHitPass {
   std::size_t m_prims = 0, m_others = 0, m_batch = 0;
   int m_pixel_spp = 0;  // the last batch's pixel_spp
   FirstHitStats m_stats;
-  // Cells of the film's 8x8 blocks, the last row and column of blocks padded.
+  // The film's width in 8x8 blocks, the last column padded, and the cells of
+  // all its blocks.
+  std::size_t blocksX() const;
   std::size_t cellCount() const;
 
   Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_dirs, m_slot_of, m_entries,

@@ -127,6 +127,16 @@ std::vector<float> samplePoints(int width, int height, int spp, std::uint64_t se
   return xy;
 }
 
+// The kinds of atomics this device runs: 64-bit where it has them, and always
+// the 32-bit pair of raster passes (what a device without them runs).
+std::vector<ZBufferAtomics> atomicsOnThisDevice(Context& context) {
+  if (context.device().hasExtension("cl_khr_int64_extended_atomics"))
+    return {ZBufferAtomics::Wide, ZBufferAtomics::Narrow};
+  return {ZBufferAtomics::Narrow};
+}
+
+const char* atomicsName(ZBufferAtomics atomics) { return atomics == ZBufferAtomics::Wide ? "64-bit" : "32-bit"; }
+
 struct Agreement {
   size_t samples = 0, same_prim = 0, identical = 0, hits = 0;
 };
@@ -150,17 +160,14 @@ Agreement compare(const Scene& scene, const std::vector<float>& xy, ZBufferAtomi
   return a;
 }
 
-// Both kinds of atomics (the narrow one is what a device without 64-bit atomics runs).
+// With each kind of atomics the device runs.
 // pixel_spp > 0: xy holds that many samples a pixel in pixel order (no pixel
 // corners), as the per-pixel sampling modes hand a batch to the pass.
 void checkAgreement(const Scene& scene, const std::vector<float>& xy, int pixel_spp = 0) {
-  for (ZBufferAtomics atomics : {ZBufferAtomics::Wide, ZBufferAtomics::Narrow}) {
-    if (atomics == ZBufferAtomics::Wide && !sharedContext().device().hasExtension("cl_khr_int64_extended_atomics"))
-      continue;
+  for (ZBufferAtomics atomics : atomicsOnThisDevice(sharedContext())) {
     Agreement a = compare(scene, xy, atomics, pixel_spp);
-    INFO((atomics == ZBufferAtomics::Wide ? "64-bit" : "32-bit") << " atomics: " << a.samples << " samples, "
-                                                                 << a.same_prim << " with the same primid, "
-                                                                 << a.identical << " identical, " << a.hits << " hits");
+    INFO(atomicsName(atomics) << " atomics: " << a.samples << " samples, " << a.same_prim << " with the same primid, "
+                              << a.identical << " identical, " << a.hits << " hits");
     CHECK(a.same_prim == a.samples);
     CHECK(a.identical == a.samples);
     CHECK(a.hits > a.samples / 4);
@@ -343,9 +350,8 @@ TEST_CASE("triangles facing away from the camera keep every sample where they li
     const size_t row = 61 * static_cast<size_t>(spp), cut1 = 15 * row - 5, cut2 = 30 * row + 7;
     REQUIRE(45 * row == z.size());
     const std::pair<size_t, size_t> batches[] = {{0, cut1}, {cut2, z.size()}, {cut1, cut2}};
-    for (ZBufferAtomics atomics : {ZBufferAtomics::Wide, ZBufferAtomics::Narrow}) {
-      if (atomics == ZBufferAtomics::Wide && !context.device().hasExtension("cl_khr_int64_extended_atomics")) continue;
-      INFO((atomics == ZBufferAtomics::Wide ? "64-bit" : "32-bit") << " atomics, in three batches");
+    for (ZBufferAtomics atomics : atomicsOnThisDevice(context)) {
+      INFO(atomicsName(atomics) << " atomics, in three batches");
       FirstHitPass pass(context, atomics);
       pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
       std::vector<HitGpu> batched(z.size());
@@ -404,9 +410,8 @@ TEST_CASE("a batch in pixel order, begun and ended mid-pixel and resolved in chu
   xy.write(all.data() + 2 * xy_first, (all.size() - 2 * xy_first) * sizeof(float));
   Buffer hits(context, count * sizeof(HitGpu));
 
-  for (ZBufferAtomics atomics : {ZBufferAtomics::Wide, ZBufferAtomics::Narrow}) {
-    if (atomics == ZBufferAtomics::Wide && !context.device().hasExtension("cl_khr_int64_extended_atomics")) continue;
-    INFO((atomics == ZBufferAtomics::Wide ? "64-bit" : "32-bit") << " atomics");
+  for (ZBufferAtomics atomics : atomicsOnThisDevice(context)) {
+    INFO(atomicsName(atomics) << " atomics");
     FirstHitPass pass(context, atomics);
     pass.prepare(gpu, primitiveKernelOptions(gpu.objects));
     pass.rasterize(geometry, xy, xy_first, first, count, 0);
