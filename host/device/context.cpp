@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "device/checked_transfers.h"
+#include "device/host_pages.h"
 #include "device/kernel_source.h"
 
 namespace prism {
@@ -46,7 +48,44 @@ std::vector<unsigned char> programBinary(cl_program program) {
 
 // ---- Buffer ------------------------------------------------------------------
 
+namespace {
+
+void CL_CALLBACK freeBufferPages(cl_mem, void* pages) {
+  const HostPages* owned = static_cast<const HostPages*>(pages);
+  freeHostPages(*owned);
+  delete owned;
+}
+
+// A CPU device's buffer of a huge page or more, in host memory of huge pages
+// that OpenCL uses as the buffer's storage (docs/devices.md, "Where a buffer's
+// memory lives"). OpenCL calls freeBufferPages when it destroys the buffer:
+// after the Buffer goes and once the commands that use it are done. Null where
+// the device or the memory declines. Not under Oclgrind's uninitialised-value
+// checker (PRISM_HOST_TRANSFERS): it takes a buffer made from host memory to
+// be written whole, which would hide the reads it is there to find.
+cl_mem hostPagesBuffer(Context& context, size_t bytes) {
+  if (!(context.device().type & CL_DEVICE_TYPE_CPU) || bytes < kHugePageBytes || checkedTransfers()) return nullptr;
+  const HostPages pages = allocateHostPages(bytes);
+  if (!pages.data) return nullptr;
+  cl_int status = CL_SUCCESS;
+  cl_mem mem = clCreateBuffer(context.handle(), CL_MEM_READ_WRITE | CL_MEM_USE_HOST_PTR, bytes, pages.data, &status);
+  if (status == CL_SUCCESS) {
+    auto owned = std::make_unique<HostPages>(pages);
+    if (clSetMemObjectDestructorCallback(mem, freeBufferPages, owned.get()) == CL_SUCCESS) {
+      owned.release();  // freeBufferPages deletes it
+      return mem;
+    }
+    clReleaseMemObject(mem);  // nothing has used it yet: its pages can go now
+  }
+  freeHostPages(pages);
+  return nullptr;
+}
+
+}  // namespace
+
 Buffer::Buffer(Context& context, size_t bytes) : m_queue(context.queue()), m_bytes(std::max(bytes, kMinBufferBytes)) {
+  m_mem = hostPagesBuffer(context, m_bytes);
+  if (m_mem) return;
   cl_int status = CL_SUCCESS;
   m_mem = clCreateBuffer(context.handle(), CL_MEM_READ_WRITE, m_bytes, nullptr, &status);
   if (status != CL_SUCCESS) throwClError(status, "clCreateBuffer", __FILE__, __LINE__);
