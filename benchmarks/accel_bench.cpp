@@ -128,6 +128,9 @@ long structureColour(const std::string& s) {
   return 0x000000;
 }
 
+// Generated tori form a size sweep (a line); other scenes are markers.
+bool isTorus(const std::string& scene) { return scene.rfind("torus-", 0) == 0; }
+
 void writePlots(const std::string& dir, const std::vector<BenchRow>& rows) {
   std::vector<std::string> order;
   for (const BenchRow& r : rows)
@@ -145,20 +148,25 @@ void writePlots(const std::string& dir, const std::vector<BenchRow>& rows) {
       {"shadow_mrays.png", "Shadow rays (any hit)", "Mrays/s", &BenchRow::shadow_mrays},
       {"random_mrays.png", "Incoherent random rays", "Mrays/s", &BenchRow::random_mrays},
   };
+  // The legend names only the kinds of scene the run had.
+  const bool tori = std::any_of(rows.begin(), rows.end(), [](const BenchRow& r) { return isTorus(r.scene); });
+  const bool meshes = std::any_of(rows.begin(), rows.end(), [](const BenchRow& r) { return !isTorus(r.scene); });
+  std::vector<std::string> notes;
+  if (tori) notes.push_back("lines: tori");
+  if (meshes) notes.push_back("squares: meshes");
   for (const Figure& f : figures) {
     std::vector<PlotSeries> series;
     for (const std::string& s : order) {
       PlotSeries ps;
       ps.name = s;
       ps.color = structureColour(s);
-      // Generated tori form a size sweep (a line); other scenes are markers.
       for (const BenchRow& r : rows)
         if (r.structure == s)
-          (r.scene.rfind("torus-", 0) == 0 ? ps.line : ps.markers)
+          (isTorus(r.scene) ? ps.line : ps.markers)
               .emplace_back(static_cast<double>(r.triangles), r.*f.field);
       series.push_back(ps);
     }
-    writeLogLogPlot(dir + "/" + f.file, f.title, "triangles", f.y, series);
+    writeLogLogPlot(dir + "/" + f.file, f.title, "triangles", f.y, series, notes);
   }
 }
 

@@ -136,7 +136,7 @@ std::string decadeLabel(int e) {
 
 std::vector<std::uint8_t> renderLogLogPlot(const std::string& title, const std::string& x_label,
                                            const std::string& y_label, const std::vector<PlotSeries>& series,
-                                           int* width, int* height) {
+                                           const std::vector<std::string>& notes, int* width, int* height) {
   const int W = 900, H = 600, left = 90, right = 190, top = 50, bottom = 70;
   Canvas cv(W, H);
   double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
@@ -218,17 +218,18 @@ std::vector<std::uint8_t> renderLogLogPlot(const std::string& title, const std::
     cv.text(static_cast<int>(left + pw) + 54, ly, s.name, ink, 2);
   }
   const int note_y = top + 20 + static_cast<int>(series.size()) * 26;
-  cv.text(static_cast<int>(left + pw) + 14, note_y, "lines: tori", ink, 1);
-  cv.text(static_cast<int>(left + pw) + 14, note_y + 12, "squares: meshes", ink, 1);
+  for (std::size_t k = 0; k < notes.size(); ++k)
+    cv.text(static_cast<int>(left + pw) + 14, note_y + 12 * static_cast<int>(k), notes[k], ink, 1);
   *width = W;
   *height = H;
   return std::move(cv.pixels());
 }
 
 void writeLogLogPlot(const std::string& path, const std::string& title, const std::string& x_label,
-                     const std::string& y_label, const std::vector<PlotSeries>& series) {
+                     const std::string& y_label, const std::vector<PlotSeries>& series,
+                     const std::vector<std::string>& notes) {
   int w = 0, h = 0;
-  std::vector<std::uint8_t> px = renderLogLogPlot(title, x_label, y_label, series, &w, &h);
+  std::vector<std::uint8_t> px = renderLogLogPlot(title, x_label, y_label, series, notes, &w, &h);
   std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
   if (!out) throw std::runtime_error(path + ": cannot write PNG: " + OIIO::geterror());
   OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
