@@ -128,8 +128,10 @@ long structureColour(const std::string& s) {
   return 0x000000;
 }
 
-// Generated tori form a size sweep (a line); other scenes are markers.
-bool isTorus(const std::string& scene) { return scene.rfind("torus-", 0) == 0; }
+// Generated tori form a size sweep (a line); other scenes are markers. The
+// tori are named by this prefix and their triangle count.
+const std::string kTorusPrefix = "torus-";
+bool isTorus(const std::string& scene) { return scene.rfind(kTorusPrefix, 0) == 0; }
 
 void writePlots(const std::string& dir, const std::vector<BenchRow>& rows) {
   std::vector<std::string> order;
@@ -367,7 +369,7 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
   for (const std::string& path : inputs) runScene(loadInput(path));
   for (std::size_t n : sizes) {
     TriangleMesh torus = bumpyTorus(n);
-    runScene(fromMesh("torus-" + std::to_string(torus.triangleCount()), torus));
+    runScene(fromMesh(kTorusPrefix + std::to_string(torus.triangleCount()), torus));
   }
 
   writeCsv(options.out_dir + "/accel.csv", rows);

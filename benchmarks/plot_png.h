@@ -25,7 +25,7 @@ struct PlotSeries {
 // cannot be written.
 void writeLogLogPlot(const std::string& path, const std::string& title, const std::string& x_label,
                      const std::string& y_label, const std::vector<PlotSeries>& series,
-                     const std::vector<std::string>& notes = {});
+                     const std::vector<std::string>& notes);
 
 // The plot as RGB8 pixels (row-major, top row first), for tests and callers
 // that write elsewhere.
