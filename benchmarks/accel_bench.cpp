@@ -96,7 +96,9 @@ struct Contender {
   BenchRow row;
   const DeviceAccel* accel = nullptr;  // prism's structure (null for Embree)
   std::function<double()> rebuild;  // builds the structure again, returns the build's seconds
-  // (Embree's rtcIntersect1 takes every ray alone, coherent or not.)
+  bool reference_build = false;      // walks the reference's structure (embree-8): its build is that one
+  // (Embree's one-ray reference takes every ray alone, coherent or not; embree-8
+  // takes the coherent ones eight at a time.)
   std::function<std::vector<HitGpu>(const std::vector<QueryRay>&, const std::vector<RayGpu>&, double*, RayCoherence)>
       intersect;
   // (view_rays: for RayQueryEngine's density rule, the camera rays whose hits the feelers start from)
@@ -125,6 +127,7 @@ long structureColour(const std::string& s) {
   if (s == "bvh-1ray") return 0x999999;
   if (s == "octree-1ray") return 0xF0A070;
   if (s == "bsp-1ray") return 0x80CFB0;
+  if (s == "embree-8") return 0x666666;
   return 0x000000;
 }
 
@@ -190,7 +193,10 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
   meta.repeats = options.repeats;
   std::cout << "device: " << meta.device << "\n";
 #ifdef PRISM_BENCH_EMBREE
-  if (options.embree) std::cout << "reference: Embree " << "3, rtcIntersect1 on " << threads << " threads\n";
+  if (options.embree)
+    std::cout << "reference: Embree 3, rtcIntersect1 on " << threads << " threads"
+              << (options.embree_packets ? " (embree-8: rtcIntersect8 / rtcOccluded8 on camera and shadow rays)" : "")
+              << "\n";
 #else
   if (options.embree) std::cout << "reference: none (prism-bench was built without Embree)\n";
 #endif
@@ -235,6 +241,26 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
                           std::uint64_t) { ref->occluded(q, s); };
       contenders.push_back(std::move(c));
       have_embree = true;
+      if (options.embree_packets) {
+        // The same BVH, so the same build; rays that travel alike go eight at a
+        // time, as prism's "bvh" takes them in packets and random rays alone.
+        Contender p;
+        p.row = contenders.front().row;
+        p.row.structure = "embree-8";
+        p.reference_build = true;
+        p.intersect = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s,
+                             RayCoherence coherence) {
+          return coherence == RayCoherence::Coherent ? ref->intersect8(q, s) : ref->intersect(q, s);
+        };
+        p.occluded = [&ref](const std::vector<QueryRay>& q, const std::vector<RayGpu>&, double* s,
+                            RayCoherence coherence, std::uint64_t) {
+          if (coherence == RayCoherence::Coherent)
+            ref->occluded8(q, s);
+          else
+            ref->occluded(q, s);
+        };
+        contenders.push_back(std::move(p));
+      }
     }
 #endif
     std::vector<std::unique_ptr<RayQueryEngine>> engines;
@@ -290,8 +316,11 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     std::vector<std::vector<double>> build_seconds(contenders.size());
     for (std::size_t i = 0; i < contenders.size(); ++i) build_seconds[i].push_back(contenders[i].row.build_seconds);
     for (int b = 1; b < builds; ++b)
-      for (std::size_t i = 0; i < contenders.size(); ++i) build_seconds[i].push_back(contenders[i].rebuild());
-    for (std::size_t i = 0; i < contenders.size(); ++i) contenders[i].row.build_seconds = median(build_seconds[i]);
+      for (std::size_t i = 0; i < contenders.size(); ++i)
+        if (!contenders[i].reference_build) build_seconds[i].push_back(contenders[i].rebuild());
+    for (std::size_t i = 0; i < contenders.size(); ++i)
+      contenders[i].row.build_seconds =
+          contenders[i].reference_build ? median(build_seconds[0]) : median(build_seconds[i]);
 
     // One untimed round gives the hits (the reference is Embree's when it
     // runs, else the first structure's) and warms every contender up.

@@ -29,6 +29,9 @@ struct AccelBenchOptions {
   std::size_t random_rays = std::size_t(1) << 20;
   int repeats = 3;                    // timings are the median of this many runs
   bool embree = true;
+  // Embree's packets as a contender too (--structures embree-8): rtcIntersect8 /
+  // rtcOccluded8 on the camera and shadow rays, rtcIntersect1 on random rays.
+  bool embree_packets = false;
   std::string command;                // for the report
 };
 

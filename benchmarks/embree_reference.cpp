@@ -16,10 +16,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+constexpr std::size_t kChunk = 4096;  // rays a thread takes at a time
+constexpr std::size_t kPacket = 8;    // rays of rtcIntersect8
+static_assert(kChunk % kPacket == 0, "a chunk is a whole number of packets, so that packets are k..k+7");
+
 // Runs body(first, last) over [0, n) in chunks on `threads` threads.
 template <typename F>
 void parallelChunks(std::size_t n, int threads, F body) {
-  constexpr std::size_t kChunk = 4096;
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (;;) {
@@ -49,6 +52,33 @@ RTCRay makeRay(const QueryRay& q) {
   r.id = 0;
   r.flags = 0;
   return r;
+}
+
+// Rays [first, last) of at most kPacket into a packet; lanes past `last` are
+// left out by `valid`.
+void makeRay8(const std::vector<QueryRay>& rays, std::size_t first, std::size_t last, RTCRay8& r, int* valid) {
+  for (std::size_t l = 0; l < kPacket; ++l) {
+    const std::size_t k = first + l;
+    valid[l] = k < last ? -1 : 0;
+    const QueryRay& q = rays[k < last ? k : first];
+    r.org_x[l] = q.ox;
+    r.org_y[l] = q.oy;
+    r.org_z[l] = q.oz;
+    r.tnear[l] = q.tmin;
+    r.dir_x[l] = q.dx;
+    r.dir_y[l] = q.dy;
+    r.dir_z[l] = q.dz;
+    r.time[l] = 0;
+    r.tfar[l] = q.tmax;
+    r.mask[l] = 0xFFFFFFFFu;
+    r.id[l] = 0;
+    r.flags[l] = 0;
+  }
+}
+
+HitGpu toHit(float tfar, unsigned geom, unsigned prim, float u, float v) {
+  if (geom == RTC_INVALID_GEOMETRY_ID) return HitGpu{INFINITY, -1, 0, 0};
+  return HitGpu{tfar, static_cast<int>(prim), u, v};
 }
 
 }  // namespace
@@ -115,12 +145,7 @@ std::vector<HitGpu> EmbreeReference::intersect(const std::vector<QueryRay>& rays
       rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
       rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(scene, &context, &rh);
-      HitGpu& h = hits[k];
-      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
-        h = HitGpu{INFINITY, -1, 0, 0};
-      } else {
-        h = HitGpu{rh.ray.tfar, static_cast<int>(rh.hit.primID), rh.hit.u, rh.hit.v};
-      }
+      hits[k] = toHit(rh.ray.tfar, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v);
     }
   });
   if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -138,6 +163,54 @@ std::vector<std::uint8_t> EmbreeReference::occluded(const std::vector<QueryRay>&
       RTCRay r = makeRay(rays[k]);
       rtcOccluded1(scene, &context, &r);
       out[k] = r.tfar == -INFINITY ? 1 : 0;
+    }
+  });
+  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return out;
+}
+
+std::vector<HitGpu> EmbreeReference::intersect8(const std::vector<QueryRay>& rays, double* seconds) const {
+  std::vector<HitGpu> hits(rays.size());
+  RTCScene scene = m_impl->scene;
+  auto start = Clock::now();
+  parallelChunks(rays.size(), m_impl->threads, [&](std::size_t first, std::size_t last) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (std::size_t k = first; k < last; k += kPacket) {
+      const std::size_t end = std::min(last, k + kPacket);
+      RTCRayHit8 rh;
+      int valid[kPacket];
+      makeRay8(rays, k, end, rh.ray, valid);
+      for (std::size_t l = 0; l < kPacket; ++l) {
+        rh.hit.geomID[l] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.primID[l] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0][l] = RTC_INVALID_GEOMETRY_ID;
+      }
+      rtcIntersect8(valid, scene, &context, &rh);
+      for (std::size_t l = 0; k + l < end; ++l)
+        hits[k + l] = toHit(rh.ray.tfar[l], rh.hit.geomID[l], rh.hit.primID[l], rh.hit.u[l], rh.hit.v[l]);
+    }
+  });
+  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return hits;
+}
+
+std::vector<std::uint8_t> EmbreeReference::occluded8(const std::vector<QueryRay>& rays, double* seconds) const {
+  std::vector<std::uint8_t> out(rays.size());
+  RTCScene scene = m_impl->scene;
+  auto start = Clock::now();
+  parallelChunks(rays.size(), m_impl->threads, [&](std::size_t first, std::size_t last) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (std::size_t k = first; k < last; k += kPacket) {
+      const std::size_t end = std::min(last, k + kPacket);
+      RTCRay8 r;
+      int valid[kPacket];
+      makeRay8(rays, k, end, r, valid);
+      rtcOccluded8(valid, scene, &context, &r);
+      for (std::size_t l = 0; k + l < end; ++l) out[k + l] = r.tfar[l] == -INFINITY ? 1 : 0;
     }
   });
   if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();

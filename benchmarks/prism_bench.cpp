@@ -169,9 +169,11 @@ int main(int argc, char** argv) {
           options.one_ray.push_back(prism::AccelKind::Octree);
         else if (s == "bsp-1ray")
           options.one_ray.push_back(prism::AccelKind::Bsp);
+        else if (s == "embree-8")
+          options.embree_packets = true;
         else if (!prism::tryParseAccelKind(s, &kind))
           usageError("--structures: unknown structure '" + s +
-                     "' (expected bvh, bvh-1ray, bvh-kdop, bvh-kobj, octree, octree-1ray, bsp, bsp-1ray or none)");
+                     "' (expected bvh, bvh-1ray, bvh-kdop, bvh-kobj, octree, octree-1ray, bsp, bsp-1ray, none or embree-8)");
         else
           options.structures.push_back(kind);
       }
@@ -198,6 +200,8 @@ int main(int argc, char** argv) {
       options.files.push_back(a);
     }
   }
+  if (options.embree_packets && !options.embree)
+    usageError("--structures embree-8 walks the Embree reference's BVH; it cannot go with --no-embree");
   try {
     prism::bench::runAccelBench(options);
   } catch (const std::exception& e) {
