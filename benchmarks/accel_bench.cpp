@@ -127,7 +127,7 @@ long structureColour(const std::string& s) {
   if (s == "bvh-1ray") return 0x999999;
   if (s == "octree-1ray") return 0xF0A070;
   if (s == "bsp-1ray") return 0x80CFB0;
-  if (s == "embree-8") return 0x666666;
+  if (s == "embree-8") return 0x5D3A9B;
   return 0x000000;
 }
 
@@ -140,7 +140,8 @@ void writePlots(const std::string& dir, const std::vector<BenchRow>& rows) {
   std::vector<std::string> order;
   for (const BenchRow& r : rows)
     if (std::find(order.begin(), order.end(), r.structure) == order.end()) order.push_back(r.structure);
-  std::stable_partition(order.begin(), order.end(), [](const std::string& s) { return s != "embree"; });
+  // Embree's rows last (embree-8, then the one-ray reference), as in the files.
+  std::stable_partition(order.begin(), order.end(), [](const std::string& s) { return s.rfind("embree", 0) != 0; });
   struct Figure {
     const char* file;
     const char* title;
@@ -242,8 +243,9 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       contenders.push_back(std::move(c));
       have_embree = true;
       if (options.embree_packets) {
-        // The same BVH, so the same build; rays that travel alike go eight at a
-        // time, as prism's "bvh" takes them in packets and random rays alone.
+        // The same BVH, so the same build; camera and shadow rays go eight at
+        // a time, random rays alone (prism's "bvh" takes the first two in
+        // packets where its density rule says they pay, random rays alone).
         Contender p;
         p.row = contenders.front().row;
         p.row.structure = "embree-8";
@@ -318,7 +320,7 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
     for (int b = 1; b < builds; ++b)
       for (std::size_t i = 0; i < contenders.size(); ++i)
         if (!contenders[i].reference_build) build_seconds[i].push_back(contenders[i].rebuild());
-    for (std::size_t i = 0; i < contenders.size(); ++i)
+    for (std::size_t i = 0; i < contenders.size(); ++i)  // the reference, where there is one, is contender 0
       contenders[i].row.build_seconds =
           contenders[i].reference_build ? median(build_seconds[0]) : median(build_seconds[i]);
 
@@ -390,9 +392,11 @@ std::vector<BenchRow> runAccelBench(const AccelBenchOptions& options) {
       }
       printTableRow(std::cout, row);
     }
-    // Embree's row last in the files, as before.
-    for (std::size_t i = have_embree ? 1 : 0; i < contenders.size(); ++i) rows.push_back(contenders[i].row);
-    if (have_embree) rows.push_back(contenders[0].row);
+    // Embree's rows last in the files, its one-ray reference at the very end, as before.
+    for (const Contender& c : contenders)
+      if (c.accel) rows.push_back(c.row);
+    for (auto c = contenders.rbegin(); c != contenders.rend(); ++c)
+      if (!c->accel) rows.push_back(c->row);
   };
 
   for (const std::string& path : inputs) runScene(loadInput(path));

@@ -54,6 +54,20 @@ RTCRay makeRay(const QueryRay& q) {
   return r;
 }
 
+// Runs body(context, first, last) over chunks of [0, n) on `threads` threads,
+// each with its own intersect context flagged `flags`; returns the seconds.
+template <typename F>
+double timedChunks(std::size_t n, int threads, RTCIntersectContextFlags flags, F body) {
+  auto start = Clock::now();
+  parallelChunks(n, threads, [&](std::size_t first, std::size_t last) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = flags;
+    body(&context, first, last);
+  });
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
 // Rays [first, last) of at most kPacket into a packet; lanes past `last` are
 // left out by `valid`.
 void makeRay8(const std::vector<QueryRay>& rays, std::size_t first, std::size_t last, RTCRay8& r, int* valid) {
@@ -134,86 +148,76 @@ EmbreeReference::~EmbreeReference() {
 std::vector<HitGpu> EmbreeReference::intersect(const std::vector<QueryRay>& rays, double* seconds) const {
   std::vector<HitGpu> hits(rays.size());
   RTCScene scene = m_impl->scene;
-  auto start = Clock::now();
-  parallelChunks(rays.size(), m_impl->threads, [&](std::size_t first, std::size_t last) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+  const double s = timedChunks(rays.size(), m_impl->threads, RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT,
+                               [&](RTCIntersectContext* context, std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k) {
       RTCRayHit rh;
       rh.ray = makeRay(rays[k]);
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
       rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(scene, &context, &rh);
+      rtcIntersect1(scene, context, &rh);
       hits[k] = toHit(rh.ray.tfar, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v);
     }
   });
-  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (seconds) *seconds = s;
   return hits;
 }
 
 std::vector<std::uint8_t> EmbreeReference::occluded(const std::vector<QueryRay>& rays, double* seconds) const {
   std::vector<std::uint8_t> out(rays.size());
   RTCScene scene = m_impl->scene;
-  auto start = Clock::now();
-  parallelChunks(rays.size(), m_impl->threads, [&](std::size_t first, std::size_t last) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+  const double s = timedChunks(rays.size(), m_impl->threads, RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT,
+                               [&](RTCIntersectContext* context, std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k) {
       RTCRay r = makeRay(rays[k]);
-      rtcOccluded1(scene, &context, &r);
+      rtcOccluded1(scene, context, &r);
       out[k] = r.tfar == -INFINITY ? 1 : 0;
     }
   });
-  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (seconds) *seconds = s;
   return out;
 }
 
 std::vector<HitGpu> EmbreeReference::intersect8(const std::vector<QueryRay>& rays, double* seconds) const {
   std::vector<HitGpu> hits(rays.size());
   RTCScene scene = m_impl->scene;
-  auto start = Clock::now();
-  parallelChunks(rays.size(), m_impl->threads, [&](std::size_t first, std::size_t last) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  const double s = timedChunks(rays.size(), m_impl->threads, RTC_INTERSECT_CONTEXT_FLAG_COHERENT,
+                               [&](RTCIntersectContext* context, std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; k += kPacket) {
       const std::size_t end = std::min(last, k + kPacket);
       RTCRayHit8 rh;
-      int valid[kPacket];
+      alignas(32) int valid[kPacket];  // Embree loads the mask as one 32-byte vector
       makeRay8(rays, k, end, rh.ray, valid);
       for (std::size_t l = 0; l < kPacket; ++l) {
         rh.hit.geomID[l] = RTC_INVALID_GEOMETRY_ID;
         rh.hit.primID[l] = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0][l] = RTC_INVALID_GEOMETRY_ID;
       }
-      rtcIntersect8(valid, scene, &context, &rh);
+      rtcIntersect8(valid, scene, context, &rh);
       for (std::size_t l = 0; k + l < end; ++l)
         hits[k + l] = toHit(rh.ray.tfar[l], rh.hit.geomID[l], rh.hit.primID[l], rh.hit.u[l], rh.hit.v[l]);
     }
   });
-  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (seconds) *seconds = s;
   return hits;
 }
 
 std::vector<std::uint8_t> EmbreeReference::occluded8(const std::vector<QueryRay>& rays, double* seconds) const {
   std::vector<std::uint8_t> out(rays.size());
   RTCScene scene = m_impl->scene;
-  auto start = Clock::now();
-  parallelChunks(rays.size(), m_impl->threads, [&](std::size_t first, std::size_t last) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  const double s = timedChunks(rays.size(), m_impl->threads, RTC_INTERSECT_CONTEXT_FLAG_COHERENT,
+                               [&](RTCIntersectContext* context, std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; k += kPacket) {
       const std::size_t end = std::min(last, k + kPacket);
       RTCRay8 r;
-      int valid[kPacket];
+      alignas(32) int valid[kPacket];
       makeRay8(rays, k, end, r, valid);
-      rtcOccluded8(valid, scene, &context, &r);
+      rtcOccluded8(valid, scene, context, &r);
       for (std::size_t l = 0; k + l < end; ++l) out[k + l] = r.tfar[l] == -INFINITY ? 1 : 0;
     }
   });
-  if (seconds) *seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (seconds) *seconds = s;
   return out;
 }
 

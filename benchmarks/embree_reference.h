@@ -27,7 +27,7 @@ class EmbreeReference {
   std::size_t bytes() const { return m_bytes; }
   std::vector<HitGpu> intersect(const std::vector<QueryRay>& rays, double* seconds) const;
   std::vector<std::uint8_t> occluded(const std::vector<QueryRay>& rays, double* seconds) const;
-  // The same answers, eight neighbouring rays a packet (rays k..k+7 from k = 0),
+  // The same answers, eight neighbouring rays a packet (rays k..k+7, k = 0, 8, 16, ...),
   // the context flagged coherent: Embree's way with camera and shadow rays.
   std::vector<HitGpu> intersect8(const std::vector<QueryRay>& rays, double* seconds) const;
   std::vector<std::uint8_t> occluded8(const std::vector<QueryRay>& rays, double* seconds) const;

@@ -1,6 +1,6 @@
 // prism-bench: measurements of prism against a reference, for people who want
 // to know which acceleration structure wins on their scenes and devices.
-//   prism-bench accel [--device D] [--sizes N,...] [--out DIR] [--structures bvh,octree,bsp,none]
+//   prism-bench accel [--device D] [--sizes N,...] [--out DIR] [--structures LIST (see --help)]
 //                     [--camera N] [--random N] [--repeat N] [--no-embree] [--data DIR] [FILES...]
 #include <cstdlib>
 #include <exception>
@@ -51,7 +51,11 @@ const char* kUsage =
     "                      octree and bsp take the camera and shadow rays eight at a time on\n"
     "                      a CPU where that pays);\n"
     "                      bvh-kdop (the BVH with \"set of normals\" bounds on its nodes and\n"
-    "                      its objects), bvh-kobj (on its objects only)\n"
+    "                      its objects), bvh-kobj (on its objects only); embree-8 (Embree's\n"
+    "                      packets beside its one-ray reference: rtcIntersect8 and\n"
+    "                      rtcOccluded8 on the camera and shadow rays, eight neighbours a\n"
+    "                      packet, rtcIntersect1 on random rays; needs a prism-bench built\n"
+    "                      with Embree, and not --no-embree)\n"
     "  --out DIR           where accel.csv, accel.json and the PNG plots go (default bench-out)\n"
     "  --camera N          N x N primary rays (default 1024)\n"
     "  --random N          incoherent random rays (default 1048576)\n"
@@ -202,6 +206,9 @@ int main(int argc, char** argv) {
   }
   if (options.embree_packets && !options.embree)
     usageError("--structures embree-8 walks the Embree reference's BVH; it cannot go with --no-embree");
+#ifndef PRISM_BENCH_EMBREE
+  if (options.embree_packets) usageError("--structures embree-8: this prism-bench was built without Embree");
+#endif
   try {
     prism::bench::runAccelBench(options);
   } catch (const std::exception& e) {
