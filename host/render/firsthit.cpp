@@ -22,7 +22,7 @@ constexpr size_t kBlock = 8;
 
 template <typename T>
 void upload(Context& context, Buffer& b, const std::vector<T>& v) {
-  b = Buffer(context, std::max<size_t>(1, v.size()) * sizeof(T));  // a buffer may not be empty
+  b.reserve(context, std::max<size_t>(1, v.size()) * sizeof(T));  // a buffer may not be empty
   b.writeVector(v);
 }
 
@@ -52,7 +52,7 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_raster = m_context.kernel("firsthit.cl", "firsthit_raster", options);
   m_resolve = m_context.kernel("firsthit.cl", "firsthit_resolve", options);
 
-  m_camera = Buffer(m_context, sizeof(CameraGpu));
+  m_camera.reserve(m_context, sizeof(CameraGpu));
   m_camera.write(&c, sizeof(CameraGpu));
   m_prims = scene.primitive_count;
   if (m_prims >= static_cast<size_t>(std::numeric_limits<std::int32_t>::max()))
@@ -85,25 +85,23 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_width = c.width;
   m_height = c.height;
   const size_t cells = cellCount();
-  m_cell_count = Buffer(m_context, cells * sizeof(std::int32_t));
+  m_cell_count.reserve(m_context, cells * sizeof(std::int32_t));
   const std::int32_t zero = 0;
   m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));  // each batch leaves it zero again
-  m_cell_start = Buffer(m_context, (cells + 1) * sizeof(std::int32_t));
-  m_slot_of = Buffer(m_context, sizeof(std::int32_t));  // bound, unread, until a batch needs sorting
+  m_cell_start.reserve(m_context, (cells + 1) * sizeof(std::int32_t));
+  m_slot_of.reserve(m_context, sizeof(std::int32_t));  // bound, unread, until a batch needs sorting
   const size_t items = m_prims + m_others;
-  m_cells = Buffer(m_context, std::max<size_t>(1, items) * 4 * sizeof(std::int32_t));
+  m_cells.reserve(m_context, std::max<size_t>(1, items) * 4 * sizeof(std::int32_t));
   // Front-facing primitives' block counts, then back-facing triangles'.
-  m_block_count = Buffer(m_context, std::max<size_t>(1, 2 * items) * sizeof(std::int32_t));
-  m_pair_start = Buffer(m_context, (2 * items + 1) * sizeof(std::int32_t));
+  m_block_count.reserve(m_context, std::max<size_t>(1, 2 * items) * sizeof(std::int32_t));
+  m_pair_start.reserve(m_context, (2 * items + 1) * sizeof(std::int32_t));
   // Plain triangles come first, eight to a work-item of firsthit_bound, which
   // writes all eight lanes.
-  m_least_t = Buffer(m_context, ((m_prims + kFirstHitBoundLanes - 1) / kFirstHitBoundLanes * kFirstHitBoundLanes + 1) *
-                                    sizeof(float));
-  // Each batch's firsthit_row_far writes only the block rows of its pixels;
-  // rows no batch has written read as holding no samples.
-  m_row_far = Buffer(m_context, cells / kBlock * sizeof(std::uint32_t));
-  const std::uint32_t no_samples = 0;
-  m_row_far.fill(&no_samples, sizeof no_samples, cells / kBlock * sizeof(std::uint32_t));
+  m_least_t.reserve(m_context,
+                    ((m_prims + kFirstHitBoundLanes - 1) / kFirstHitBoundLanes * kFirstHitBoundLanes + 1) * sizeof(float));
+  // Left as it is: each batch's firsthit_row_far writes the block rows of its
+  // pixels, the only rows its raster reads.
+  m_row_far.reserve(m_context, cells / kBlock * sizeof(std::uint32_t));
   m_batch = 0;
   m_stats = FirstHitStats{};
   m_stats.others = m_others;

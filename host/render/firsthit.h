@@ -42,7 +42,11 @@ class FirstHitPass {
   // The scene's camera and what the kernels need besides its geometry:
   // the primitives that are not plain triangles, with their world bounds.
   // primitive_options: primitiveKernelOptions of the scene (the structure's
-  // build has them: DeviceAccel::primitive_options).
+  // build has them: DeviceAccel::primitive_options). The device buffers are
+  // kept from one call to the next, as large as the largest scene and film
+  // asked: on a CPU device a fresh buffer is fresh memory, and its first
+  // touch made a frame's prepare take up to 30 ms instead of 1 to 2
+  // (docs/sampling.md, "prepare keeps its buffers").
   void prepare(const GpuScene& scene, const std::string& primitive_options);
   // The depth + id entries of the `count` positions k in [first, first + count)
   // (film coordinates in [0, W] x [0, H]) of the scene whose geometry is

@@ -435,6 +435,54 @@ TEST_CASE("a batch in pixel order, begun and ended mid-pixel and resolved in chu
   }
 }
 
+TEST_CASE("a pass prepared again for another scene and film gives the hits and pairs of a fresh pass",
+          "[firsthit][mesh]") {
+  // prepare keeps its buffers from one frame to the next, so what a frame
+  // finds in them must not matter: a batch of part of a narrow film, then a
+  // whole wider film with a plane among its primitives (every buffer grows),
+  // then the narrow film's batch again in the larger buffers the wide one left.
+  struct Frame {
+    GpuScene gpu;
+    size_t first, count;
+  };
+  auto frame = [](int width, bool with_plane, size_t first_row, size_t rows) {
+    Scene scene = bunnyAndSphere(width);
+    if (with_plane) scene.objects.push_back(plane({0, 0.05, 0}, {0, 1, 0}));
+    const size_t w = static_cast<size_t>(width);
+    return Frame{flattenScene(scene, RenderOptions::fromScene(scene)), first_row * w, rows * w};
+  };
+  const Frame frames[] = {frame(83, false, 25, 12), frame(120, true, 0, 60), frame(83, false, 25, 12)};
+  Context& context = sharedContext();
+  for (ZBufferAtomics atomics : atomicsOnThisDevice(context)) {
+    FirstHitPass reused(context, atomics);
+    for (size_t f = 0; f < 3; ++f) {
+      INFO(atomicsName(atomics) << " atomics, frame " << f);
+      const Frame& fr = frames[f];
+      const int width = fr.gpu.camera.width, height = fr.gpu.camera.height;
+      std::vector<float> xy;  // every pixel's centre, in pixel order
+      for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i) xy.insert(xy.end(), {i + 0.5f, j + 0.5f});
+      GeometryBuffers geometry(context, fr.gpu);
+      Buffer pos(context, xy.size() * sizeof(float)), hits(context, fr.count * sizeof(HitGpu));
+      pos.writeVector(xy);
+      auto pass = [&](FirstHitPass& p) {
+        p.prepare(fr.gpu, primitiveKernelOptions(fr.gpu.objects));
+        p.rasterize(geometry, pos, 0, fr.first, fr.count, 1);
+        p.resolve(geometry, 0, fr.count, hits);
+        return std::make_pair(hits.readVector<HitGpu>(fr.count), p.stats().pairs);
+      };
+      FirstHitPass fresh(context, atomics);
+      const auto expected = pass(fresh);
+      const auto got = pass(reused);
+      size_t hit = 0;
+      for (const HitGpu& h : expected.first) hit += h.prim >= 0;
+      CHECK(hit > fr.count / 4);
+      CHECK(std::memcmp(got.first.data(), expected.first.data(), fr.count * sizeof(HitGpu)) == 0);
+      CHECK(got.second == expected.second);
+    }
+  }
+}
+
 TEST_CASE("first hits on a million triangles match the closed form", "[firsthit][scale]") {
   // A grid of nx x ny quads in the plane z = 0 spanning [-1, 1]^2, each cut along
   // its diagonal into (p00, p10, p11) and (p00, p11, p01), seen head-on from z = 3.
