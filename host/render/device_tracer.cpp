@@ -581,6 +581,8 @@ void DeviceTracer::checkFilmFits(std::uint64_t samples, bool with_positions, std
     other += m_firsthit->deviceBytes() - m_firsthit->batchBytes() +
              std::max<std::uint64_t>(m_firsthit->batchBytes(),
                                      std::min<std::uint64_t>(kZBufferBatch, samples) * kZBufferBytesPerSample);
+  else if (m_firsthit)  // what an earlier render's pass still holds (FirstHitPass keeps its buffers)
+    other += m_firsthit->deviceBytes();
 
   const std::uint64_t per_sample = kFilmBytesPerSample + (with_positions ? kPositionBytesPerSample : 0);
   const std::uint64_t max_keys = static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max());

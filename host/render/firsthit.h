@@ -45,7 +45,7 @@ class FirstHitPass {
   // build has them: DeviceAccel::primitive_options). The device buffers are
   // kept from one call to the next, as large as the largest scene and film
   // asked: on a CPU device a fresh buffer is fresh memory, and its first
-  // touch made a frame's prepare take up to 30 ms instead of 1 to 2
+  // touch made a frame's prepare take 15 to 49 ms at times instead of 1 to 2
   // (docs/sampling.md, "prepare keeps its buffers").
   void prepare(const GpuScene& scene, const std::string& primitive_options);
   // The depth + id entries of the `count` positions k in [first, first + count)

@@ -260,6 +260,50 @@ TEST_CASE("a device with memory for a unit of the frame but not the whole frame 
                                                   Catch::Contains("under 2^31") && Catch::Contains("at most 127"));
 }
 
+TEST_CASE("a render counts the device memory that an earlier render's Z-buffer pass still holds") {
+  // FirstHitPass keeps its buffers from one render to the next, so a traced
+  // frame after a Z-buffer one must count them before it takes its film.
+  const std::vector<Context*> all = poclDevices();
+  REQUIRE(!all.empty());
+  const Scene scene = loadSceneFile(std::string(PRISM_SOURCE_DIR "/scenes/whitted.json"));
+  RenderOptions traced = RenderOptions::fromScene(scene);
+  traced.width = 320;
+  traced.height = 240;
+  traced.aa = AaMode::Jitter;
+  traced.spp = 16;
+  traced.first_hit = FirstHitMode::Trace;
+  RenderOptions zbuffer = traced;
+  zbuffer.spp = 1;
+  zbuffer.first_hit = FirstHitMode::ZBuffer;
+  const auto stop = [](double) { return false; };  // the film is checked before the first chunk
+  // Whether a renderer on a device of `bytes` takes the traced frame, after the Z-buffer frame or not.
+  const auto fits = [&](std::uint64_t bytes, bool after_zbuffer) {
+    auto context = withMemory(*all[0], bytes);
+    Renderer renderer(*context);
+    if (after_zbuffer) {
+      const RenderResult z = renderer.render(scene, zbuffer);
+      REQUIRE(z.stats.first_hit == FirstHitMode::ZBuffer);
+    }
+    try {
+      renderer.render(scene, traced, stop);
+    } catch (const FilmTooLarge&) {
+      return false;
+    } catch (const RenderCancelled&) {
+    }
+    return true;
+  };
+  // The least memory (to 1 MiB) that takes it on a fresh renderer; the pass
+  // holds more than that step (its 76,800 samples' entries and directions alone).
+  std::uint64_t refused = 0, taken = std::uint64_t{16} << 30;
+  REQUIRE(fits(taken, false));
+  while (taken - refused > (1u << 20)) {
+    const std::uint64_t mid = refused + (taken - refused) / 2;
+    (fits(mid, false) ? taken : refused) = mid;
+  }
+  CHECK_FALSE(fits(taken, true));
+  CHECK(fits(taken + (std::uint64_t{64} << 20), true));
+}
+
 TEST_CASE("the Z-buffer's batches trace in a device's window and reach the film that resolves the frame") {
   // Jitter at 14 spp, 640x480: two batches of the Z-buffer (64 slices, then
   // 106,496 samples). The first device fails at once, so the second, which holds one

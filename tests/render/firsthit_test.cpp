@@ -439,8 +439,10 @@ TEST_CASE("a pass prepared again for another scene and film gives the hits and p
           "[firsthit][mesh]") {
   // prepare keeps its buffers from one frame to the next, so what a frame
   // finds in them must not matter: a batch of part of a narrow film, then a
-  // whole wider film with a plane among its primitives (every buffer grows),
-  // then the narrow film's batch again in the larger buffers the wide one left.
+  // whole wider film with a plane among its primitives (most buffers grow),
+  // then the narrow film's batch again in the larger buffers the wide one
+  // left; each batch in pixel order and sorted (the counts and slots of the
+  // counting sort), each pass into a buffer of its own.
   struct Frame {
     GpuScene gpu;
     size_t first, count;
@@ -463,22 +465,28 @@ TEST_CASE("a pass prepared again for another scene and film gives the hits and p
       for (int j = 0; j < height; ++j)
         for (int i = 0; i < width; ++i) xy.insert(xy.end(), {i + 0.5f, j + 0.5f});
       GeometryBuffers geometry(context, fr.gpu);
-      Buffer pos(context, xy.size() * sizeof(float)), hits(context, fr.count * sizeof(HitGpu));
+      Buffer pos(context, xy.size() * sizeof(float));
       pos.writeVector(xy);
-      auto pass = [&](FirstHitPass& p) {
-        p.prepare(fr.gpu, primitiveKernelOptions(fr.gpu.objects));
-        p.rasterize(geometry, pos, 0, fr.first, fr.count, 1);
-        p.resolve(geometry, 0, fr.count, hits);
-        return std::make_pair(hits.readVector<HitGpu>(fr.count), p.stats().pairs);
-      };
-      FirstHitPass fresh(context, atomics);
-      const auto expected = pass(fresh);
-      const auto got = pass(reused);
-      size_t hit = 0;
-      for (const HitGpu& h : expected.first) hit += h.prim >= 0;
-      CHECK(hit > fr.count / 4);
-      CHECK(std::memcmp(got.first.data(), expected.first.data(), fr.count * sizeof(HitGpu)) == 0);
-      CHECK(got.second == expected.second);
+      for (int pixel_spp : {1, 0}) {
+        INFO((pixel_spp ? "in pixel order" : "sorted"));
+        auto pass = [&](FirstHitPass& p) {
+          Buffer hits(context, fr.count * sizeof(HitGpu));
+          const std::uint32_t unwritten = 0xFFFFFFFFu;  // no hit's bits: a hit resolve skips cannot match
+          hits.fill(&unwritten, sizeof unwritten, fr.count * sizeof(HitGpu));
+          p.prepare(fr.gpu, primitiveKernelOptions(fr.gpu.objects));
+          p.rasterize(geometry, pos, 0, fr.first, fr.count, pixel_spp);
+          p.resolve(geometry, 0, fr.count, hits);
+          return std::make_pair(hits.readVector<HitGpu>(fr.count), p.stats().pairs);
+        };
+        FirstHitPass fresh(context, atomics);
+        const auto expected = pass(fresh);
+        const auto got = pass(reused);
+        size_t hit = 0;
+        for (const HitGpu& h : expected.first) hit += h.prim >= 0;
+        CHECK(hit > fr.count / 4);
+        CHECK(std::memcmp(got.first.data(), expected.first.data(), fr.count * sizeof(HitGpu)) == 0);
+        CHECK(got.second == expected.second);
+      }
     }
   }
 }
