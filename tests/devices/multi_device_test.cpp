@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -184,6 +185,17 @@ static std::unique_ptr<Context> withMemory(const Context& like, std::uint64_t by
   return std::make_unique<Context>(d, true);
 }
 
+// The least device memory, to 1 MiB, that `fits` takes, up to 16 GiB.
+static std::uint64_t leastMemoryTaken(const std::function<bool(std::uint64_t)>& fits) {
+  std::uint64_t refused = 0, taken = std::uint64_t{16} << 30;
+  REQUIRE(fits(taken));
+  while (taken - refused > (1u << 20)) {
+    const std::uint64_t mid = refused + (taken - refused) / 2;
+    (fits(mid) ? taken : refused) = mid;
+  }
+  return taken;
+}
+
 TEST_CASE("a device with memory for a unit of the frame but not the whole frame shares it") {
   const std::vector<Context*> all = poclDevices();
   REQUIRE(all.size() >= 2);
@@ -211,12 +223,7 @@ TEST_CASE("a device with memory for a unit of the frame but not the whole frame 
     }
     return true;
   };
-  std::uint64_t refused = 0, taken = std::uint64_t{16} << 30;
-  REQUIRE(fits(taken));
-  while (taken - refused > (1u << 20)) {
-    const std::uint64_t mid = refused + (taken - refused) / 2;
-    (fits(mid) ? taken : refused) = mid;
-  }
+  const std::uint64_t taken = leastMemoryTaken(fits);
   // Half the film less: the frame does not fit, a unit of it does, with room to spare.
   const std::uint64_t little_bytes = taken - film / 2;
   REQUIRE(!fits(little_bytes));
@@ -294,12 +301,7 @@ TEST_CASE("a render counts the device memory that an earlier render's Z-buffer p
   };
   // The least memory (to 1 MiB) that takes it on a fresh renderer; the pass
   // holds more than that step (its 76,800 samples' entries and directions alone).
-  std::uint64_t refused = 0, taken = std::uint64_t{16} << 30;
-  REQUIRE(fits(taken, false));
-  while (taken - refused > (1u << 20)) {
-    const std::uint64_t mid = refused + (taken - refused) / 2;
-    (fits(mid, false) ? taken : refused) = mid;
-  }
+  const std::uint64_t taken = leastMemoryTaken([&](std::uint64_t bytes) { return fits(bytes, false); });
   CHECK_FALSE(fits(taken, true));
   CHECK(fits(taken + (std::uint64_t{64} << 20), true));
 }
