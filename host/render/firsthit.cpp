@@ -85,10 +85,7 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_width = c.width;
   m_height = c.height;
   const size_t cells = cellCount();
-  m_cell_count.reserve(m_context, cells * sizeof(std::int32_t));
-  const std::int32_t zero = 0;
-  m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));  // each batch leaves it zero again
-  m_cell_start.reserve(m_context, (cells + 1) * sizeof(std::int32_t));
+  // The cells' counts and starts are made by the first batch that needs sorting.
   m_slot_of.reserve(m_context, sizeof(std::int32_t));  // bound, unread, until a batch needs sorting
   const size_t items = m_prims + m_others;
   m_cells.reserve(m_context, std::max<size_t>(1, items) * 4 * sizeof(std::int32_t));
@@ -140,6 +137,10 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .run((count + kFirstHitDirLanes - 1) / kFirstHitDirLanes);
   } else {
     m_slot_of.reserve(m_context, count * sizeof(std::int32_t));
+    zeroCellCounts(cells);
+    m_cell_start.reserve(m_context, (cells + 1) * sizeof(std::int32_t));
+    const size_t zero_cells = m_zero_cells;
+    m_zero_cells = 0;  // until the sort below is enqueued: a batch cut short leaves counts
     m_context.launch(m_count_cells).arg(m_camera).arg(xy).arg(in_xy).arg(n).arg(m_cell_count).run(count);
     m_scan.exclusive(m_cell_count, cells, m_cell_start);
     m_context.launch(m_sort_samples)
@@ -153,6 +154,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(m_slot_of)
         .arg(m_entries)
         .run(count);
+    m_zero_cells = zero_cells;  // each sample took its slot by counting its cell down
   }
   m_pixel_spp = pixel_spp;
 
@@ -259,6 +261,15 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
       .arg(static_cast<cl_int>(first))
       .arg(hits)
       .run(count);
+}
+
+void FirstHitPass::zeroCellCounts(size_t cells) {
+  if (m_zero_cells >= cells) return;
+  m_zero_cells = 0;
+  m_cell_count.reserve(m_context, cells * sizeof(std::int32_t));
+  const std::int32_t zero = 0;
+  m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));
+  m_zero_cells = cells;
 }
 
 size_t FirstHitPass::blocksX() const { return (static_cast<size_t>(m_width) + kBlock - 1) / kBlock; }
