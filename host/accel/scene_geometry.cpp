@@ -38,6 +38,30 @@ std::vector<ObjectGpu> deviceRecords(const SceneGeometry& geometry) {
   return out;
 }
 
+std::vector<std::size_t> notPlainTriangles(const SceneGeometry& geometry) {
+  std::vector<std::size_t> ids;
+  auto walk = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const ObjectGpu& ob = geometry.objects[k];
+      if (ob.type != OBJECT_TRIANGLE || ob.has_transform != 0) ids.push_back(k);
+    }
+  };
+  static_assert(sizeof(MeshGpu) == sizeof(ObjectGpu), "a mesh header is kept in an object record");
+  walk(0, geometry.triangle_base);
+  // The headers follow the triangles, in the order of their first triangles.
+  for (std::size_t m = 0; m < geometry.mesh_count; ++m) {
+    MeshGpu header;
+    std::memcpy(&header, &geometry.objects[geometry.primitive_count + m], sizeof header);
+    if (header.has_transform == 0) continue;
+    MeshGpu next{};
+    next.first_triangle = static_cast<int>(geometry.primitive_count);
+    if (m + 1 < geometry.mesh_count)
+      std::memcpy(&next, &geometry.objects[geometry.primitive_count + m + 1], sizeof next);
+    walk(static_cast<std::size_t>(header.first_triangle), static_cast<std::size_t>(next.first_triangle));
+  }
+  return ids;
+}
+
 std::size_t deviceGeometryBytes(const SceneGeometry& geometry) {
   return (geometry.objects.size() - geometry.triangleCount()) * sizeof(ObjectGpu) +
          geometry.triangles.size() * sizeof(std::uint32_t) + geometry.mesh_data.size() * sizeof(float);

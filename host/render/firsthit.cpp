@@ -62,9 +62,8 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   std::vector<std::int32_t> other_prims;
   std::vector<float> other_boxes;
   constexpr float kInf = std::numeric_limits<float>::infinity();
-  for (size_t k = 0; k < m_prims; ++k) {
+  for (size_t k : notPlainTriangles(scene)) {
     const ObjectGpu& ob = scene.objects[k];
-    if (ob.type == OBJECT_TRIANGLE && ob.has_transform == 0) continue;
     other_prims.push_back(static_cast<std::int32_t>(k));
     Aabb b;
     if (objectBounds(ob, &b))
@@ -296,12 +295,11 @@ size_t FirstHitPass::deviceBytes() const {
 }
 
 bool zbufferPays(const GpuScene& scene, std::uint64_t samples) {
-  double prims = 0;
-  for (size_t k = 0; k < scene.primitive_count; ++k) {
+  const std::vector<size_t> others = notPlainTriangles(scene);
+  double prims = static_cast<double>(scene.primitive_count - others.size());
+  for (size_t k : others) {
     Aabb b;
-    const ObjectGpu& ob = scene.objects[k];
-    const bool bounded = (ob.type == OBJECT_TRIANGLE && ob.has_transform == 0) || objectBounds(ob, &b);
-    prims += bounded ? 1.0 : kUnboundedAsPrims * static_cast<double>(samples);
+    prims += objectBounds(scene.objects[k], &b) ? 1.0 : kUnboundedAsPrims * static_cast<double>(samples);
   }
   return prims <= kZBufferPrimsPerSample * static_cast<double>(samples);
 }

@@ -175,6 +175,43 @@ TEST_CASE("objects naming one mesh file share it, analytic objects number first,
   fs::remove_all(dir);
 }
 
+TEST_CASE("the primitives that are not plain triangles are the records a walk over every primitive finds",
+          "[render][mesh]") {
+  // notPlainTriangles reads a static mesh's header, not its triangles'
+  // records: a moving mesh between two static ones, a moving one last, and
+  // analytic primitives (a moving sphere among them) must come out as the
+  // walk over every record finds them, in order.
+  SmallMesh m = icosphere();
+  fs::path dir = scratch();
+  writeObj(m, dir / "ico.obj");
+  std::string json = R"({
+    "camera": {"position": [0, 0, 9], "look_at": [0, 0, 0], "fov": 40, "shutter": [0, 1]},
+    "film": {"width": 16, "height": 16},
+    "lights": [{"position": [0, 5, 9]}],
+    "objects": [
+      {"type": "mesh", "file": "ico.obj", "transform": {"translate": [-2.5, 0, 0]}},
+      {"type": "mesh", "file": "ico.obj", "transform": {"translate": [2, 0, 0]}, "transform_end": {"translate": [2, 0.5, 0]}},
+      {"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "transform_end": {"translate": [0, 0.2, 0]}},
+      {"type": "mesh", "file": "ico.obj", "transform": {"rotate": {"axis": [0, 1, 0], "angle": 30}}},
+      {"type": "plane", "point": [0, -2, 0], "normal": [0, 1, 0]},
+      {"type": "mesh", "file": "ico.obj", "transform_end": {"translate": [0, 0, 1]}}
+    ]
+  })";
+  std::ofstream(dir / "scene.json") << json;
+  Scene scene = loadSceneFile((dir / "scene.json").string());
+  GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
+  const size_t n = m.f.size();
+  REQUIRE(gpu.mesh_count == 4);
+  REQUIRE(gpu.triangle_base == 2);
+  std::vector<size_t> walked;
+  for (size_t k = 0; k < gpu.primitive_count; ++k)
+    if (gpu.objects[k].type != OBJECT_TRIANGLE || gpu.objects[k].has_transform != 0) walked.push_back(k);
+  // The sphere, the plane and the two moving meshes' triangles.
+  CHECK(walked.size() == 2 + 2 * n);
+  CHECK(notPlainTriangles(gpu) == walked);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("k-DOP bounds render the boxes' image bit for bit, moving objects included, and bad names are refused",
           "[render][mesh][kdop]") {
   SmallMesh m = icosphere();
