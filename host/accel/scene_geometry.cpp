@@ -1,8 +1,10 @@
 #include "accel/scene_geometry.h"
 
 #include <cstring>
+#include <stdexcept>
 #include <utility>
 
+#include "accel/leaf_packets.h"
 #include "accel/prim_ref.h"
 #include "scene/primitives/primitive_kind.h"
 
@@ -38,26 +40,29 @@ std::vector<ObjectGpu> deviceRecords(const SceneGeometry& geometry) {
   return out;
 }
 
+static_assert(sizeof(MeshGpu) == sizeof(ObjectGpu), "a mesh header is kept in an object record");
+
 std::vector<std::size_t> notPlainTriangles(const SceneGeometry& geometry) {
+  if (geometry.triangleCount() > 0 && geometry.mesh_count == 0)
+    throw std::logic_error("notPlainTriangles: compact triangles without a mesh header");
   std::vector<std::size_t> ids;
   auto walk = [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const ObjectGpu& ob = geometry.objects[k];
-      if (ob.type != OBJECT_TRIANGLE || ob.has_transform != 0) ids.push_back(k);
-    }
+    for (std::size_t k = begin; k < end; ++k)
+      if (!isPacketTriangle(geometry.objects[k])) ids.push_back(k);
   };
-  static_assert(sizeof(MeshGpu) == sizeof(ObjectGpu), "a mesh header is kept in an object record");
   walk(0, geometry.triangle_base);
   // The headers follow the triangles, in the order of their first triangles.
+  auto header = [&](std::size_t m) {
+    MeshGpu h;
+    std::memcpy(&h, &geometry.objects[geometry.primitive_count + m], sizeof h);
+    return h;
+  };
   for (std::size_t m = 0; m < geometry.mesh_count; ++m) {
-    MeshGpu header;
-    std::memcpy(&header, &geometry.objects[geometry.primitive_count + m], sizeof header);
-    if (header.has_transform == 0) continue;
-    MeshGpu next{};
-    next.first_triangle = static_cast<int>(geometry.primitive_count);
-    if (m + 1 < geometry.mesh_count)
-      std::memcpy(&next, &geometry.objects[geometry.primitive_count + m + 1], sizeof next);
-    walk(static_cast<std::size_t>(header.first_triangle), static_cast<std::size_t>(next.first_triangle));
+    const MeshGpu h = header(m);
+    if (h.has_transform == 0) continue;
+    const std::size_t end =
+        m + 1 < geometry.mesh_count ? static_cast<std::size_t>(header(m + 1).first_triangle) : geometry.primitive_count;
+    walk(static_cast<std::size_t>(h.first_triangle), end);
   }
   return ids;
 }

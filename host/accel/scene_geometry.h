@@ -43,7 +43,7 @@ SceneGeometry geometryFromRecords(std::vector<ObjectGpu> objects);
 std::vector<ObjectGpu> deviceRecords(const SceneGeometry& geometry);
 
 // The ids of the primitives that are not plain triangles (a triangle record in
-// world space: OBJECT_TRIANGLE without a transform), ascending. Of the compact
+// world space: isPacketTriangle), ascending. Of the compact
 // triangles only a moving mesh's are read, a static mesh's being in world space
 // by construction (flattenScene), so a mesh scene costs its headers rather than
 // a walk over every triangle's record.

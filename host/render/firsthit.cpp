@@ -84,7 +84,11 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_width = c.width;
   m_height = c.height;
   const size_t cells = cellCount();
-  // The cells' counts and starts are made by the first batch that needs sorting.
+  // The counting sort's cells, reserved here so that a frame's memory check
+  // counts them; their counts are zeroed by the first batch that sorts (a
+  // larger buffer has more cells than m_zero_cells, so it is zeroed too).
+  m_cell_count.reserve(m_context, cells * sizeof(std::int32_t));
+  m_cell_start.reserve(m_context, (cells + 1) * sizeof(std::int32_t));
   m_slot_of.reserve(m_context, sizeof(std::int32_t));  // bound, unread, until a batch needs sorting
   const size_t items = m_prims + m_others;
   m_cells.reserve(m_context, std::max<size_t>(1, items) * 4 * sizeof(std::int32_t));
@@ -124,6 +128,8 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   const float zero = 0.0f;
   m_dirs.fill(&zero, sizeof zero, 4 * sizeof(float), 3 * count * sizeof(float));
   m_entries.reserve(m_context, count * 2 * sizeof(std::uint32_t));
+  // Known once the batch's sort has run (the blocking reads below wait for it).
+  size_t zero_cells_after = m_zero_cells;
   if (pixel_spp > 0) {
     // Eight samples a work-item (kFirstHitDirLanes, as firsthit_pixel_dirs takes them).
     m_context.launch(m_pixel_dirs)
@@ -136,10 +142,11 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .run((count + kFirstHitDirLanes - 1) / kFirstHitDirLanes);
   } else {
     m_slot_of.reserve(m_context, count * sizeof(std::int32_t));
-    zeroCellCounts(cells);
-    m_cell_start.reserve(m_context, (cells + 1) * sizeof(std::int32_t));
-    const size_t zero_cells = m_zero_cells;
-    m_zero_cells = 0;  // until the sort below is enqueued: a batch cut short leaves counts
+    ensureCellCountsZero(cells);
+    // Each sample takes its slot by counting its cell down, so a sort that
+    // has run leaves every count zero; one cut short leaves counts.
+    zero_cells_after = m_zero_cells;
+    m_zero_cells = 0;
     m_context.launch(m_count_cells).arg(m_camera).arg(xy).arg(in_xy).arg(n).arg(m_cell_count).run(count);
     m_scan.exclusive(m_cell_count, cells, m_cell_start);
     m_context.launch(m_sort_samples)
@@ -153,7 +160,6 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
         .arg(m_slot_of)
         .arg(m_entries)
         .run(count);
-    m_zero_cells = zero_cells;  // each sample took its slot by counting its cell down
   }
   m_pixel_spp = pixel_spp;
 
@@ -182,6 +188,7 @@ void FirstHitPass::rasterize(const GeometryBuffers& geometry, const Buffer& xy, 
   std::int32_t total = 0, front = 0;
   m_pair_start.read(&total, sizeof total, 2 * items * sizeof(std::int32_t));
   m_pair_start.read(&front, sizeof front, items * sizeof(std::int32_t));
+  m_zero_cells = zero_cells_after;
   if (total >= kScanSaturated)
     throw std::runtime_error(
         "first hit zbuffer: the primitives' film bounds cover 2^31 or more 8x8-pixel blocks; use --first-hit trace");
@@ -262,10 +269,9 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
       .run(count);
 }
 
-void FirstHitPass::zeroCellCounts(size_t cells) {
+void FirstHitPass::ensureCellCountsZero(size_t cells) {
   if (m_zero_cells >= cells) return;
   m_zero_cells = 0;
-  m_cell_count.reserve(m_context, cells * sizeof(std::int32_t));
   const std::int32_t zero = 0;
   m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));
   m_zero_cells = cells;

@@ -84,9 +84,9 @@ class FirstHitPass {
   std::size_t cellCount() const;
   // Sorted batches count their samples into m_cell_count, which must start at
   // zero. firsthit_sort_samples leaves it zero again, so it is filled only
-  // when it grows or a batch was cut short: its fill was most of a pixel-order
-  // frame's prepare, which never reads it (docs/sampling.md).
-  void zeroCellCounts(std::size_t cells);
+  // when it is new or a batch was cut short: its fill was most of a
+  // pixel-order frame's prepare, which never reads it (docs/sampling.md).
+  void ensureCellCountsZero(std::size_t cells);
   std::size_t m_zero_cells = 0;  // the leading cells of m_cell_count known to be zero
 
   Buffer m_camera, m_other_prims, m_other_boxes, m_cell_count, m_cell_start, m_dirs, m_slot_of, m_entries,

@@ -577,11 +577,10 @@ TEST_CASE("first hit auto takes the Z-buffer while primitives are few beside the
   std::copy(v, v + 9, tri.p);
   const std::uint64_t samples = 1000000;
   const size_t limit = static_cast<size_t>(kZBufferPrimsPerSample * samples);
-  gpu.objects.assign(limit, tri);
-  gpu.primitive_count = gpu.objects.size();
+  static_cast<SceneGeometry&>(gpu) = geometryFromRecords(std::vector<ObjectGpu>(limit, tri));
   CHECK(zbufferPays(gpu, samples));
   gpu.objects.push_back(tri);
-  gpu.primitive_count = gpu.objects.size();
+  gpu.primitive_count = gpu.triangle_base = gpu.objects.size();
   CHECK_FALSE(zbufferPays(gpu, samples));
   CHECK(zbufferPays(gpu, 2 * samples));
   // One plane outweighs a few triangles.

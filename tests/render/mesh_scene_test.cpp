@@ -1,6 +1,7 @@
 // Meshes inside scenes: the same mesh through every format renders the same
 // primid and depth AOVs; objects naming one file share it; smooth normals;
-// the quick-render camera frames the mesh.
+// the quick-render camera frames the mesh; which primitives of a flattened
+// scene are plain triangles, read from its mesh headers.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -65,6 +66,17 @@ void writeObj(const SmallMesh& m, const fs::path& p) {
   o.precision(9);
   for (auto& v : m.v) o << "v " << v.x << " " << v.y << " " << v.z << "\n";
   for (auto& f : m.f) o << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << "\n";
+}
+
+// The scene of `json`, whose meshes may name "ico.obj" (the icosphere) beside
+// it; a loaded scene holds its meshes, so the files go at once.
+Scene icosphereScene(const std::string& json) {
+  fs::path dir = scratch();
+  writeObj(icosphere(), dir / "ico.obj");
+  std::ofstream(dir / "scene.json") << json;
+  Scene scene = loadSceneFile((dir / "scene.json").string());
+  fs::remove_all(dir);
+  return scene;
 }
 
 void writeOff(const SmallMesh& m, const fs::path& p) {
@@ -133,9 +145,7 @@ TEST_CASE("the same mesh as OBJ, PLY (ascii and binary) and OFF renders identica
 TEST_CASE("objects naming one mesh file share it, analytic objects number first, then each mesh's triangles",
           "[render][mesh]") {
   SmallMesh m = icosphere();
-  fs::path dir = scratch();
-  writeObj(m, dir / "ico.obj");
-  std::string json = R"({
+  Scene scene = icosphereScene(R"({
     "camera": {"position": [0, 0, 9], "look_at": [0, 0, 0], "fov": 40},
     "film": {"width": 48, "height": 32},
     "materials": {"red": {"diffuse": [0.8, 0.1, 0.1]}},
@@ -145,9 +155,7 @@ TEST_CASE("objects naming one mesh file share it, analytic objects number first,
       {"type": "mesh", "file": "ico.obj", "material": "red", "transform": {"translate": [2.5, 0, 0]}, "smooth": true},
       {"type": "sphere", "center": [0, 0, 0], "radius": 0.5}
     ]
-  })";
-  std::ofstream(dir / "scene.json") << json;
-  Scene scene = loadSceneFile((dir / "scene.json").string());
+  })");
   REQUIRE(scene.objects.size() == 3);
   CHECK(scene.objects[0].mesh == scene.objects[1].mesh);
   CHECK(scene.objects[1].material_override);
@@ -172,7 +180,6 @@ TEST_CASE("objects naming one mesh file share it, analytic objects number first,
   CHECK((id(10, 16) >= 1 && id(10, 16) <= int(n)));
   CHECK((id(37, 16) > int(n) && id(37, 16) <= int(2 * n)));
   CHECK(id(24, 16) == 0);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("the primitives that are not plain triangles are the records a walk over every primitive finds",
@@ -181,10 +188,8 @@ TEST_CASE("the primitives that are not plain triangles are the records a walk ov
   // records: a moving mesh between two static ones, a moving one last, and
   // analytic primitives (a moving sphere among them) must come out as the
   // walk over every record finds them, in order.
-  SmallMesh m = icosphere();
-  fs::path dir = scratch();
-  writeObj(m, dir / "ico.obj");
-  std::string json = R"({
+  const size_t n = icosphere().f.size();
+  Scene scene = icosphereScene(R"({
     "camera": {"position": [0, 0, 9], "look_at": [0, 0, 0], "fov": 40, "shutter": [0, 1]},
     "film": {"width": 16, "height": 16},
     "lights": [{"position": [0, 5, 9]}],
@@ -196,11 +201,8 @@ TEST_CASE("the primitives that are not plain triangles are the records a walk ov
       {"type": "plane", "point": [0, -2, 0], "normal": [0, 1, 0]},
       {"type": "mesh", "file": "ico.obj", "transform_end": {"translate": [0, 0, 1]}}
     ]
-  })";
-  std::ofstream(dir / "scene.json") << json;
-  Scene scene = loadSceneFile((dir / "scene.json").string());
+  })");
   GpuScene gpu = flattenScene(scene, RenderOptions::fromScene(scene));
-  const size_t n = m.f.size();
   REQUIRE(gpu.mesh_count == 4);
   REQUIRE(gpu.triangle_base == 2);
   std::vector<size_t> walked;
@@ -209,15 +211,15 @@ TEST_CASE("the primitives that are not plain triangles are the records a walk ov
   // The sphere, the plane and the two moving meshes' triangles.
   CHECK(walked.size() == 2 + 2 * n);
   CHECK(notPlainTriangles(gpu) == walked);
-  fs::remove_all(dir);
+  // Compact triangles with no header to say whether they move are refused.
+  SceneGeometry headless = gpu;
+  headless.mesh_count = 0;
+  CHECK_THROWS_AS(notPlainTriangles(headless), std::logic_error);
 }
 
 TEST_CASE("k-DOP bounds render the boxes' image bit for bit, moving objects included, and bad names are refused",
           "[render][mesh][kdop]") {
-  SmallMesh m = icosphere();
-  fs::path dir = scratch();
-  writeObj(m, dir / "ico.obj");
-  std::string json = R"({
+  Scene scene = icosphereScene(R"({
     "camera": {"position": [0.3, 1, 9], "look_at": [0, 0, 0], "fov": 40, "shutter": [0, 1]},
     "film": {"width": 48, "height": 32, "spp": 2},
     "materials": {"glass": {"diffuse": [0.1, 0.1, 0.1], "transmit": 0.8, "ior": 1.5},
@@ -231,9 +233,7 @@ TEST_CASE("k-DOP bounds render the boxes' image bit for bit, moving objects incl
       {"type": "box", "min": [-3, -2, -2], "max": [3, -1.5, 1]},
       {"type": "cylinder", "radius": 0.3, "height": 1, "transform": {"translate": [0, 1.2, 0]}}
     ]
-  })";
-  std::ofstream(dir / "scene.json") << json;
-  Scene scene = loadSceneFile((dir / "scene.json").string());
+  })");
   RenderOptions kdop = RenderOptions::fromScene(scene);
   REQUIRE(kdop.bounds == BoundsKind::Kdop);
   RenderOptions boxes = kdop;
@@ -245,6 +245,7 @@ TEST_CASE("k-DOP bounds render the boxes' image bit for bit, moving objects incl
   CHECK(a.primid == b.primid);
   CHECK(std::count_if(a.primid.begin(), a.primid.end(), [](auto id) { return id >= 0; }) > long(a.primid.size() / 5));
 
+  fs::path dir = scratch();
   std::ofstream(dir / "bad.json") << R"({"render": {"bounds": "obb"}})";
   CHECK_THROWS_WITH(loadSceneFile((dir / "bad.json").string()),
                     Catch::Contains("render.bounds") && Catch::Contains("unknown bounds 'obb'") &&
