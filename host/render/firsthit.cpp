@@ -85,9 +85,12 @@ void FirstHitPass::prepare(const GpuScene& scene, const std::string& primitive_o
   m_height = c.height;
   const size_t cells = cellCount();
   // The counting sort's cells, reserved here so that a frame's memory check
-  // counts them; their counts are zeroed by the first batch that sorts (a
-  // larger buffer has more cells than m_zero_cells, so it is zeroed too).
+  // counts them; their counts are zeroed by the first batch that sorts. A new
+  // buffer's counts are unknown even where a later, smaller film's cells fit
+  // in what the old one had zeroed.
+  const cl_mem counts_before = m_cell_count.handle();
   m_cell_count.reserve(m_context, cells * sizeof(std::int32_t));
+  if (m_cell_count.handle() != counts_before) m_zero_cells = 0;
   m_cell_start.reserve(m_context, (cells + 1) * sizeof(std::int32_t));
   m_slot_of.reserve(m_context, sizeof(std::int32_t));  // bound, unread, until a batch needs sorting
   const size_t items = m_prims + m_others;

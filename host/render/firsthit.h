@@ -84,8 +84,9 @@ class FirstHitPass {
   std::size_t cellCount() const;
   // Sorted batches count their samples into m_cell_count, which must start at
   // zero. firsthit_sort_samples leaves it zero again, so it is filled only
-  // when it is new or a batch was cut short: its fill was most of a
-  // pixel-order frame's prepare, which never reads it (docs/sampling.md).
+  // when a film has more cells than were last zeroed, the buffer is new, or
+  // a batch was cut short: its fill was most of a pixel-order frame's
+  // prepare, which never reads it (docs/sampling.md).
   void ensureCellCountsZero(std::size_t cells);
   std::size_t m_zero_cells = 0;  // the leading cells of m_cell_count known to be zero
 

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -442,22 +443,29 @@ TEST_CASE("a pass prepared again for another scene and film gives the hits and p
   // whole wider film with a plane among its primitives (most buffers grow),
   // then the narrow film's batch again in the larger buffers the wide one
   // left; each batch in pixel order and sorted (the counts and slots of the
-  // counting sort), each pass into a buffer of its own.
+  // counting sort), each pass into a buffer of its own. Then the wide film in
+  // pixel order alone, a still wider one in pixel order alone (the cell
+  // counts' buffer grows and no sorted batch zeroes it), the narrow film's
+  // sorted batch again, whose cells fit in what the old buffer had zeroed,
+  // and the wide film's sorted batch, whose cells are more than that.
   struct Frame {
     GpuScene gpu;
     size_t first, count;
+    std::vector<int> orders;  // pixel_spp of its batches: 1 in pixel order, 0 sorted
   };
-  auto frame = [](int width, bool with_plane, size_t first_row, size_t rows) {
+  auto frame = [](int width, bool with_plane, size_t first_row, size_t rows, std::vector<int> orders) {
     Scene scene = bunnyAndSphere(width);
     if (with_plane) scene.objects.push_back(plane({0, 0.05, 0}, {0, 1, 0}));
     const size_t w = static_cast<size_t>(width);
-    return Frame{flattenScene(scene, RenderOptions::fromScene(scene)), first_row * w, rows * w};
+    return Frame{flattenScene(scene, RenderOptions::fromScene(scene)), first_row * w, rows * w, std::move(orders)};
   };
-  const Frame frames[] = {frame(83, false, 25, 12), frame(120, true, 0, 60), frame(83, false, 25, 12)};
+  const Frame frames[] = {frame(83, false, 25, 12, {1, 0}), frame(120, true, 0, 60, {1, 0}),
+                          frame(83, false, 25, 12, {1, 0}), frame(200, true, 0, 60, {1}),
+                          frame(83, false, 25, 12, {0}), frame(120, true, 0, 60, {0})};
   Context& context = sharedContext();
   for (ZBufferAtomics atomics : atomicsOnThisDevice(context)) {
     FirstHitPass reused(context, atomics);
-    for (size_t f = 0; f < 3; ++f) {
+    for (size_t f = 0; f < std::size(frames); ++f) {
       INFO(atomicsName(atomics) << " atomics, frame " << f);
       const Frame& fr = frames[f];
       const int width = fr.gpu.camera.width, height = fr.gpu.camera.height;
@@ -467,7 +475,7 @@ TEST_CASE("a pass prepared again for another scene and film gives the hits and p
       GeometryBuffers geometry(context, fr.gpu);
       Buffer pos(context, xy.size() * sizeof(float));
       pos.writeVector(xy);
-      for (int pixel_spp : {1, 0}) {
+      for (int pixel_spp : fr.orders) {
         INFO((pixel_spp ? "in pixel order" : "sorted"));
         auto pass = [&](FirstHitPass& p) {
           Buffer hits(context, fr.count * sizeof(HitGpu));
