@@ -43,11 +43,13 @@ SceneGeometry geometryFromRecords(std::vector<ObjectGpu> objects);
 std::vector<ObjectGpu> deviceRecords(const SceneGeometry& geometry);
 
 // The ids of the primitives that are not plain triangles (a triangle record in
-// world space: isPacketTriangle), ascending. Of the compact
-// triangles only a moving mesh's are read, a static mesh's being in world space
-// by construction (flattenScene), so a mesh scene costs its headers rather than
-// a walk over every triangle's record.
+// world space: isPacketTriangle), ascending. Of the compact triangles only a
+// moving mesh's are read, a static mesh's being in world space by
+// construction (flattenScene), so a mesh scene costs its headers rather than a
+// walk over every triangle's record. Throws std::logic_error for compact
+// triangles without any mesh header.
 std::vector<std::size_t> notPlainTriangles(const SceneGeometry& geometry);
+
 // Bytes the geometry takes on the device (object records, triangles, mesh data).
 std::size_t deviceGeometryBytes(const SceneGeometry& geometry);
 
