@@ -443,11 +443,11 @@ TEST_CASE("a pass prepared again for another scene and film gives the hits and p
   // whole wider film with a plane among its primitives (most buffers grow),
   // then the narrow film's batch again in the larger buffers the wide one
   // left; each batch in pixel order and sorted (the counts and slots of the
-  // counting sort), each pass into a buffer of its own. Then the wide film in
-  // pixel order alone, a still wider one in pixel order alone (the cell
-  // counts' buffer grows and no sorted batch zeroes it), the narrow film's
-  // sorted batch again, whose cells fit in what the old buffer had zeroed,
-  // and the wide film's sorted batch, whose cells are more than that.
+  // counting sort), each pass into a buffer of its own. Then a still wider
+  // film in pixel order alone (the cell counts' buffer grows and no sorted
+  // batch zeroes it), the narrow film's sorted batch again, whose cells fit
+  // in what the old buffer had zeroed, and the wide film's sorted batch,
+  // whose cells are more than that.
   struct Frame {
     GpuScene gpu;
     size_t first, count;
