@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "accel/leaf_packets.h"
+
 namespace prism {
 namespace {
 
@@ -60,7 +62,7 @@ DiagonalSlabs primitiveDiagonalSlabs(const ObjectGpu& object, const Aabb& box) {
       hi[j] = std::fmax(hi[j], d);
     }
   };
-  if (object.type == OBJECT_TRIANGLE && object.has_transform == 0) {
+  if (isPacketTriangle(object)) {
     for (int k = 0; k < 3; ++k) add(object.p[3 * k], object.p[3 * k + 1], object.p[3 * k + 2]);
   } else {
     for (int c = 0; c < 8; ++c)

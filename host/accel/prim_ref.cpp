@@ -200,7 +200,7 @@ double staticPad(const double lo[3], const double hi[3]) {
 
 bool objectBounds(const ObjectGpu& ob, Aabb* bounds) {
   double lo[3], hi[3];
-  if (ob.type == OBJECT_TRIANGLE && !ob.has_transform) {
+  if (isPacketTriangle(ob)) {
     // Most of any scene's primitives (a mesh's): straight to the triangle's
     // box, without looking its kind up.
     return kTriangleKind.local_bounds(ob, nullptr, lo, hi) && toAabb(lo, hi, staticPad(lo, hi), bounds);

@@ -274,7 +274,6 @@ void FirstHitPass::resolve(const GeometryBuffers& geometry, size_t first, size_t
 
 void FirstHitPass::ensureCellCountsZero(size_t cells) {
   if (m_zero_cells >= cells) return;
-  m_zero_cells = 0;
   const std::int32_t zero = 0;
   m_cell_count.fill(&zero, sizeof zero, cells * sizeof(std::int32_t));
   m_zero_cells = cells;
