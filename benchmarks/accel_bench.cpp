@@ -20,7 +20,7 @@
 #include "plot_png.h"
 #include "render/gpu_scene.h"
 #include "render/ray_queries.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 #ifdef PRISM_BENCH_EMBREE
 #include "embree_reference.h"

@@ -11,7 +11,7 @@
 #include "device/context.h"
 #include "device/device_list.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 namespace prism::bench {
 namespace {

@@ -17,7 +17,7 @@
 #include "scene/patches/bpt_file.h"
 #include "scene/patches/patch_subdivision.h"
 #include "scene/primitives/primitive_kind.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 namespace prism::bench {
 namespace {

@@ -13,7 +13,7 @@
 #include "device/device_list.h"
 #include "render/gpu_scene.h"
 #include "render/ray_queries.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 namespace prism::bench {
 namespace {

@@ -22,7 +22,7 @@
 #include "kernels/shared/ray_gpu.h"
 #include "render/image_writer.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 namespace prism::bench {
 namespace {

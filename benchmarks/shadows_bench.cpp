@@ -17,7 +17,7 @@
 #include "render/light_buffer.h"
 #include "render/renderer.h"
 #include "scene/mesh_objects.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 namespace prism::bench {
 namespace {

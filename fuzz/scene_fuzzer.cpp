@@ -8,7 +8,7 @@
 #include <string>
 
 #include "mesh/mesh_error.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -13,7 +13,7 @@
 #include "device/device_list.h"
 #include "render/image_writer.h"
 #include "scene/animation.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 using namespace prism;
 

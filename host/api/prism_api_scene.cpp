@@ -10,7 +10,7 @@
 #include "api/api_enums.h"
 #include "api/api_fragments.h"
 #include "api/api_handles.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 using namespace prism;
 using Json = nlohmann::json;

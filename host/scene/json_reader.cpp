@@ -4,7 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "scene/scene_loader.h"
+#include "scene/scene_error.h"
 
 namespace prism {
 

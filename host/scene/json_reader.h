@@ -37,7 +37,7 @@ class JsonReader {
       : m_name(std::move(name)), m_warnings(warnings), m_base_dir(std::move(base_dir)) {}
 
   std::string prefix() const { return m_name.empty() ? "" : m_name + ": "; }
-  // Throw SceneError (scene/scene_loader.h).
+  // Throw SceneError (scene/scene_error.h).
   [[noreturn]] void fail(const std::string& path, const std::string& what) const;
   [[noreturn]] void expected(const std::string& path, const std::string& what, const Json& got) const;
 

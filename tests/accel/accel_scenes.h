@@ -15,7 +15,7 @@
 #include "kernels/shared/material_gpu.h"
 #include "kernels/shared/object_gpu.h"
 #include "scene/primitives/primitive_kind.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/test_data.h"
 
 namespace prism::test {

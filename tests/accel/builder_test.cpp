@@ -23,7 +23,7 @@
 #include "render/gpu_scene.h"
 #include "render/ray_queries.h"
 #include "render/render_options.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/shared_context.h"
 
 using namespace prism;

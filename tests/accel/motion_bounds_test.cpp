@@ -12,7 +12,7 @@
 #include "kernels/shared/motion_gpu.h"
 #include "render/gpu_scene.h"
 #include "scene/motion.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 using namespace prism;
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "scene/motion.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/scene_errors.h"
 
 using namespace prism;

@@ -1,4 +1,4 @@
-// The scene format's keys for distributed ray tracing (host/scene/scene_loader.cpp):
+// The scene format's keys for distributed ray tracing (host/scene_format/scene_loader.cpp):
 // area lights (quad/rect, disk, sphere) and their samples, the lens (aperture,
 // focus_distance), the shutter and the moving camera, and the gloss and
 // translucency exponents. Good values reach the scene model; each bad one is
@@ -11,7 +11,7 @@
 
 #include "scene/light_check.h"
 #include "scene/scene.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/scene_errors.h"
 
 using namespace prism;

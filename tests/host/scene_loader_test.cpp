@@ -1,7 +1,7 @@
-// Tests for the JSON scene loader (host/scene/scene_loader.cpp) and the affine
+// Tests for the JSON scene loader (host/scene_format/scene_loader.cpp) and the affine
 // transform arithmetic it relies on (host/scene/transform.cpp). Expected messages
 // are the ones documented in docs/scene-format.md.
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

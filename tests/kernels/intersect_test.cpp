@@ -8,7 +8,7 @@
 #include <random>
 
 #include "render/ray_queries.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/reference_geometry.h"
 #include "support/shared_context.h"
 

@@ -14,7 +14,7 @@
 
 #include "render/gpu_scene.h"
 #include "render/ray_queries.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/scene_errors.h"
 #include "support/shared_context.h"
 

@@ -16,7 +16,7 @@
 #include "kernels/shared/ray_gpu.h"
 #include "prism.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/square_coverage.h"
 #include "support/shared_context.h"
 #include "support/test_data.h"

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/reference_geometry.h"
 #include "support/shared_context.h"
 

@@ -14,7 +14,7 @@
 
 #include "render/renderer.h"
 #include "scene/animation.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/shared_context.h"
 
 using namespace prism;

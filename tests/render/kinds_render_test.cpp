@@ -13,7 +13,7 @@
 #include "render/ray_queries.h"
 #include "render/renderer.h"
 #include "scene/mesh_objects.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/scene_errors.h"
 #include "support/shared_context.h"
 #include "support/test_data.h"

@@ -13,7 +13,7 @@
 #include "render/gpu_scene.h"
 #include "render/light_buffer.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/scene_errors.h"
 #include "support/shared_context.h"
 #include "support/test_data.h"

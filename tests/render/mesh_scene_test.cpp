@@ -16,7 +16,7 @@
 #include "render/gpu_scene.h"
 #include "render/renderer.h"
 #include "scene/mesh_objects.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/shared_context.h"
 
 using namespace prism;

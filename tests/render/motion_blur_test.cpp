@@ -13,7 +13,7 @@
 #include "render/gpu_scene.h"
 #include "render/renderer.h"
 #include "scene/motion.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/shared_context.h"
 
 using namespace prism;

@@ -11,7 +11,7 @@
 
 #include "render/renderer.h"
 #include "scene/patches/bpt_file.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/scene_errors.h"
 #include "support/shared_context.h"
 #include "support/test_data.h"

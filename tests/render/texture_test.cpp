@@ -20,7 +20,7 @@
 #include "render/gpu_scene.h"
 #include "render/renderer.h"
 #include "scene/image_texture.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/scene_errors.h"
 #include "support/shared_context.h"
 

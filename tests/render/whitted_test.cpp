@@ -9,7 +9,7 @@
 
 #include "kernels/shared/ray_gpu.h"
 #include "render/renderer.h"
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "support/reference_shading.h"
 #include "support/shared_context.h"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 #include "scene/vec3.h"
 
 namespace prism::test {

@@ -2,25 +2,12 @@
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>
-#include <stdexcept>
 #include <string>
 
 #include "scene/scene.h"
+#include "scene/scene_error.h"
 
 namespace prism {
-
-// A bad scene: the message names the file, the JSON path (objects[3].radius) or
-// line:column, and what was expected.
-class SceneError : public std::runtime_error {
- public:
-  explicit SceneError(const std::string& message) : std::runtime_error(message) {}
-};
-
-// Thrown when the file itself cannot be opened or read.
-class SceneIoError : public SceneError {
- public:
-  using SceneError::SceneError;
-};
 
 Scene loadSceneFile(const std::string& path);
 // `name` stands for the file in messages.

@@ -1,7 +1,7 @@
 // Reads the JSON scene format (docs/scene-format.md) into a Scene. Every value is
 // checked here, so the renderer may trust the Scene it gets; every message names the
 // file and the JSON path. Mesh files and the C API's scene building live elsewhere.
-#include "scene/scene_loader.h"
+#include "scene_format/scene_loader.h"
 
 #include <algorithm>
 #include <cerrno>
