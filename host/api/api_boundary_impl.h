@@ -8,7 +8,7 @@
 #include "mesh/mesh_error.h"
 #include "render/image_writer.h"
 #include "render/renderer.h"
-#include "scene_format/scene_loader.h"
+#include "scene/scene_error.h"
 
 namespace prism {
 

@@ -11,25 +11,25 @@
 #include <filesystem>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
-
-#include "device/device_selector.h"
-#include "mesh/mesh_cache.h"
-#include "mesh/mesh_error.h"
-#include "scene/sampling_options.h"
-#include "scene/animation.h"
-#include "scene/camera_check.h"
-#include "scene/json_reader.h"
-#include "scene/light_check.h"
-#include "scene/primitives/bounds_kind.h"
-#include "scene/render_modes.h"
-#include "scene/primitives/inside_test.h"
-#include "scene/primitives/primitive_kind.h"
-#include "scene/mesh_objects.h"
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
+
+#include "device/device_selector.h"
+#include "mesh/mesh_cache.h"
+#include "mesh/mesh_error.h"
+#include "scene/animation.h"
+#include "scene/camera_check.h"
+#include "scene/json_reader.h"
+#include "scene/light_check.h"
+#include "scene/mesh_objects.h"
+#include "scene/primitives/bounds_kind.h"
+#include "scene/primitives/inside_test.h"
+#include "scene/primitives/primitive_kind.h"
+#include "scene/render_modes.h"
+#include "scene/sampling_options.h"
 
 namespace prism {
 

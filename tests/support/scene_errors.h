@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "scene_format/scene_loader.h"
 #include "scene/vec3.h"
+#include "scene_format/scene_loader.h"
 
 namespace prism::test {
 
