@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "args.h"
@@ -118,7 +119,8 @@ std::string samplingText(const PrismRenderOptions& options) {
 }
 
 // --camera-pos/--camera-look/--camera-up/--fov/--aperture/--focus-distance
-// replace the scene's values; the library checks that the result can form an image.
+// replace the scene's values; the library checks that the result can form an
+// image, and a camera it refuses is a usage error naming the flags given.
 bool applyCameraOverrides(const RenderRequest& request, PrismScene scene) {
   if (!request.camera_pos && !request.camera_look && !request.camera_up && !request.fov && !request.aperture &&
       !request.focus_distance)
@@ -135,7 +137,16 @@ bool applyCameraOverrides(const RenderRequest& request, PrismScene scene) {
   if (request.fov) camera.fov_degrees = *request.fov;
   if (request.aperture) camera.aperture = *request.aperture;
   if (request.focus_distance) camera.focus_distance = *request.focus_distance;
-  return prismSetCamera(scene, &camera) == PRISM_OK;
+  if (prismSetCamera(scene, &camera) == PRISM_OK) return true;
+  std::string flags;
+  for (auto [given, flag] : {std::pair{request.camera_pos.has_value(), "--camera-pos"},
+                             std::pair{request.camera_look.has_value(), "--camera-look"},
+                             std::pair{request.camera_up.has_value(), "--camera-up"},
+                             std::pair{request.fov.has_value(), "--fov"},
+                             std::pair{request.aperture.has_value(), "--aperture"},
+                             std::pair{request.focus_distance.has_value(), "--focus-distance"}})
+    if (given) flags += (flags.empty() ? "" : ", ") + std::string(flag);
+  throw UsageError(flags + ": " + lastErrorForUser());
 }
 
 // Checked before rendering, so a typo in the folder does not cost a render.

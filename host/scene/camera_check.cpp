@@ -1,16 +1,24 @@
 #include "scene/camera_check.h"
 
 #include <cmath>
+#include <utility>
+
+#include "scene/value_check.h"
 
 namespace prism {
 
 std::string cameraProblem(const Camera& c) {
-  for (const Vec3* v : {&c.position, &c.look_at, &c.up})
-    if (!std::isfinite(v->x) || !std::isfinite(v->y) || !std::isfinite(v->z)) return "camera values must be finite";
+  // Points where the objects' coordinates may be (value_check.h); the up
+  // direction is only a direction.
+  for (auto [v, name] : {std::pair{&c.position, "position"}, std::pair{&c.look_at, "look_at"}}) {
+    const std::string p = vectorProblem(*v, name);
+    if (!p.empty()) return p;
+  }
+  if (!std::isfinite(c.up.x) || !std::isfinite(c.up.y) || !std::isfinite(c.up.z)) return "up must be finite";
   if (!(c.fov > 0 && c.fov < 180)) return "fov must be in (0, 180) degrees, got " + std::to_string(c.fov);
   const Vec3 view = c.look_at - c.position;
   if (view == Vec3()) return "the camera's position and look_at point are the same";
-  if (c.up == Vec3() || !(length(cross(normalize(c.up), normalize(view))) > 1e-9))
+  if (c.up == Vec3() || !(length(cross(unitVector(c.up), unitVector(view))) > 1e-9))
     return "the camera's up direction is parallel to its view direction";
   if (!(std::isfinite(c.aperture) && c.aperture >= 0 && c.aperture <= 1e15))
     return "aperture (the lens radius) must be a number in [0, 1e15], got " + std::to_string(c.aperture);
@@ -24,12 +32,13 @@ std::string cameraProblem(const Camera& c) {
     return "the shutter must close no earlier than it opens, got [" + std::to_string(c.shutter_open) + ", " +
            std::to_string(c.shutter_close) + "]";
   if (c.moving) {
-    for (const Vec3* v : {&c.position_end, &c.look_at_end})
-      if (!std::isfinite(v->x) || !std::isfinite(v->y) || !std::isfinite(v->z))
-        return "the camera's position_end and look_at_end must be finite";
+    for (auto [v, name] : {std::pair{&c.position_end, "position_end"}, std::pair{&c.look_at_end, "look_at_end"}}) {
+      const std::string p = vectorProblem(*v, name);
+      if (!p.empty()) return p;
+    }
     const Vec3 view_end = c.look_at_end - c.position_end;
     if (view_end == Vec3()) return "the camera's position_end and look_at_end are the same";
-    if (!(length(cross(normalize(c.up), normalize(view_end))) > 1e-9))
+    if (!(length(cross(unitVector(c.up), unitVector(view_end))) > 1e-9))
       return "the camera's up direction is parallel to its view direction at shutter close";
   }
   return "";

@@ -60,13 +60,6 @@ std::string describe(const Json& v, int depth) {
   }
 }
 
-// Dividing by the largest component first keeps the squares from overflowing or
-// underflowing, so any finite non-zero input gives a unit vector.
-Vec3 unitVector(const Vec3& v) {
-  const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
-  return normalize(v / m);
-}
-
 std::string member(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }

@@ -20,8 +20,6 @@ std::string formatNumber(double x);
 std::string formatVec(const Vec3& v);
 // A short, printable rendering of any value for "got ...", bounded in size.
 std::string describe(const Json& v, int depth = 0);
-// Any finite non-zero vector to unit length, without overflow or underflow.
-Vec3 unitVector(const Vec3& v);
 // JSON paths: member("objects[2]", "radius") is "objects[2].radius".
 std::string member(const std::string& path, const std::string& key);
 std::string element(const std::string& path, std::size_t i);

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <stdexcept>
 
 #include "scene/primitives/polygon_shape.h"
+#include "scene/value_check.h"
 
 namespace prism {
 namespace {
@@ -36,6 +38,24 @@ void attachDiffuseMaps(Scene& scene, std::size_t first, const std::string& sourc
 }
 
 }  // namespace
+
+std::string meshPlacementProblem(const TriangleMesh& mesh, const Transform& transform, bool moving) {
+  // As the flattening places them (render/gpu_scene.cpp, appendMesh).
+  const bool placed = !moving && !transform.isIdentity();
+  for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+    const Vec3 raw{mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]};
+    const Vec3 p = placed ? transform.applyPoint(raw) : raw;
+    std::string problem = vectorProblem(p, "vertices");
+    if (problem.empty()) continue;
+    char at[96];
+    std::snprintf(at, sizeof at, "(%.9g, %.9g, %.9g)", p.x, p.y, p.z);
+    // A mesh from a file names it; one from a caller's arrays is the call's.
+    const std::string of = mesh.plugin.empty() ? "" : " of '" + mesh.source + "'";
+    return problem + (placed ? " once placed by the object's transform" : "") + ": vertex " + std::to_string(v) +
+           of + " lies at " + at;
+  }
+  return "";
+}
 
 Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth) {
   Object o;
@@ -96,6 +116,8 @@ Scene sceneForMesh(const SharedMesh& mesh) {
   if (mesh->triangleCount() == 0)
     throw std::invalid_argument(mesh->source + ": holds " + std::to_string(mesh->vertexCount()) +
                                 " vertices and no faces (a point cloud?): nothing to render");
+  const std::string placement = meshPlacementProblem(*mesh, Transform::identity(), false);
+  if (!placement.empty()) throw std::invalid_argument(placement);  // (it names the file)
   Vec3 lo = Vec3::splat(std::numeric_limits<double>::infinity()), hi = -lo;
   for (std::size_t i = 0; i < mesh->indices.size(); ++i) {
     const float* p = &mesh->positions[3 * mesh->indices[i]];

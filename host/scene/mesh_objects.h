@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "scene/scene.h"
@@ -13,6 +14,14 @@ namespace prism {
 // mesh, however many objects share it. `material` < 0 keeps the file's materials
 // (and the default material where the file gives none); otherwise it overrides them.
 Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth);
+
+// "" when every vertex of the mesh lies within the coordinates the kernels
+// take (scene/value_check.h) where the object puts it: placed in world space by
+// `transform`, or, for a moving object, whose triangles stay in object space
+// (the kernels move the rays instead), as the mesh has it. Else the problem,
+// naming the first vertex past the limit. The scene loader and the C API both
+// ask before adding a mesh object.
+std::string meshPlacementProblem(const TriangleMesh& mesh, const Transform& transform, bool moving);
 
 // The vertex indices, and the positions, of the face that starts at triangle
 // `first_triangle` of the mesh's fan, in file order.

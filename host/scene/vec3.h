@@ -30,5 +30,11 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 inline Vec3 normalize(const Vec3& v) { return v / length(v); }
+// The same direction of unit length, for any finite non-zero v: dividing by the
+// largest component first keeps the squares from overflowing or underflowing.
+inline Vec3 unitVector(const Vec3& v) {
+  const double m = std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z)));
+  return normalize(v / m);
+}
 
 }  // namespace prism

@@ -420,8 +420,11 @@ class SceneParser : private JsonReader {
   void parseObjects(const Json& v, const std::string& path) {
     if (!v.is_array()) expected(path, "an array of objects", v);
     for (std::size_t i = 0; i < v.size(); ++i) {
-      Object o = parseObject(v[i], element(path, m_scene.objects.size()));  // its index in the scene
+      const std::string at = element(path, m_scene.objects.size());  // its index in the scene
+      Object o = parseObject(v[i], at);
       if (o.type == ObjectType::Mesh) {
+        const std::string problem = meshPlacementProblem(*o.mesh, o.transform, o.moving);
+        if (!problem.empty()) fail(at, problem);
         Object& mesh = addMeshObject(m_scene, o.mesh, o.material_override ? o.material : -1, o.transform, o.smooth);
         mesh.moving = o.moving;
         mesh.transform_end = o.transform_end;

@@ -222,6 +222,31 @@ int main(int argc, char** argv) {
     m[0] = m[5] = m[10] = 1e-20f; /* invertible, but its inverse is not a float */
     CHECK(prismAddMeshArrays(scene, tri, 3, idx, 1, NULL, m, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
     CHECK(strstr(prismGetLastError(), "inverse") != NULL);
+    /* A mesh whose vertices the transform places past 1e15, and one already
+     * there, as the scene format refuses them. */
+    m[0] = m[5] = m[10] = 1e8f;
+    {
+      const float far_tri[9] = {1e8f, 0, 0, 1e8f, 1, 0, 1e8f, 0, 1};
+      const float huge_tri[9] = {-1e30f, 0, 0, 1e30f, 0, 0, 0, 1e30f, 0};
+      CHECK(prismAddMeshArrays(scene, far_tri, 3, idx, 1, NULL, m, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
+      CHECK(strstr(prismGetLastError(), "prismAddMeshArrays") != NULL &&
+            strstr(prismGetLastError(), "at most 1e15") != NULL && strstr(prismGetLastError(), "vertex 0") != NULL);
+      CHECK(prismAddMeshArrays(scene, huge_tri, 3, idx, 1, NULL, NULL, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
+      CHECK(strstr(prismGetLastError(), "at most 1e15") != NULL);
+    }
+    /* The camera's points too. */
+    {
+      PrismCamera cam, bad;
+      CHECK_OK(prismGetCamera(scene, &cam));
+      bad = cam;
+      bad.position[2] = 1e20f;
+      CHECK(prismSetCamera(scene, &bad) == PRISM_ERROR_INVALID_ARGUMENT);
+      CHECK(strstr(prismGetLastError(), "position") != NULL && strstr(prismGetLastError(), "1e15") != NULL);
+      bad = cam;
+      bad.look_at[0] = -1e20f;
+      CHECK(prismSetCamera(scene, &bad) == PRISM_ERROR_INVALID_ARGUMENT);
+      CHECK(strstr(prismGetLastError(), "look_at") != NULL);
+    }
   }
 
   /* Area lights: the scene loader's checks and messages; a valid one renders. */

@@ -49,6 +49,14 @@ expect_usage_error("--spp, --aa: aa grid needs a square spp" render "${scene}" -
 expect_usage_error("--aa-max-level" render "${scene}" -o "${out}" --aa-max-level 9)
 expect_usage_error("--aa-threshold" render "${scene}" -o "${out}" --aa-threshold -0.5)
 expect_usage_error("--first-hit: unknown mode 'raster'" render "${scene}" -o "${out}" --first-hit raster)
+# The camera flags are checked with the rest of the scene's camera, once the scene is read,
+# by the library's camera check; a refusal names the flags given.
+expect_usage_error("--camera-pos: camera: position must have coordinates of at most 1e15"
+                   render "${scene}" -o "${out}" --camera-pos 3e38,0,0)
+expect_usage_error("--camera-up: camera.up: expected a direction" render "${scene}" -o "${out}" --camera-up 0,0,0)
+expect_usage_error("--aperture: camera: aperture" render "${scene}" -o "${out}" --aperture 1e20)
+expect_usage_error("--camera-pos, --camera-look: camera.look_at: expected a point different"
+                   render "${scene}" -o "${out}" --camera-pos 0,0,0 --camera-look 0,0,0)
 
 file(GLOB left "${WORK_DIR}/*")
 if(left)

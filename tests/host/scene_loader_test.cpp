@@ -262,6 +262,14 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
       {R"({"camera": {"position": [0, "a", 0]}})", {"camera.position[1]", "a finite number", "got \"a\""}},
       {R"({"camera": {"position": [0, 0]}})", {"camera.position", "an array of 3 numbers", "got [0, 0]"}},
       {R"({"camera": []})", {"camera: expected an object"}},
+      // The camera's points stay where objects may be (coordinates of at most 1e15); far
+      // enough out, the up check must not be what refuses it.
+      {R"({"camera": {"position": [0, 0, 1e20]}})", {"camera: position must have coordinates of at most 1e15"}},
+      {R"({"camera": {"position": [0, 0, 1e300]}})", {"camera: position must have coordinates of at most 1e15"}},
+      {R"({"camera": {"look_at": [-1e16, 0, 0]}})", {"camera: look_at must have coordinates of at most 1e15"}},
+      {R"({"camera": {"position_end": [0, 0, 1e20]}})",
+       {"camera: position_end must have coordinates of at most 1e15"}},
+      {R"({"camera": {"look_at_end": [0, 1e20, 0]}})", {"camera: look_at_end must have coordinates of at most 1e15"}},
       // materials
       {R"({"materials": []})", {"materials: expected an object"}},
       {R"({"materials": {"m": 3}})", {"materials.m: expected an object, got 3"}},
@@ -349,6 +357,17 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
     CHECK(message.rfind("bad.json: ", 0) == 0);
     for (const std::string& w : c.words) CHECK(contains(message, w));
   }
+}
+
+TEST_CASE("the camera's up is any finite direction off the view direction, however long", "[scene][errors]") {
+  // Only its direction counts, so neither its length nor its square may overflow
+  // or underflow on the way (up [0, 1e300, 0] squared is not a double).
+  for (const char* up : {"[0, 1e300, 0]", "[0, 1e-300, 0]", "[1e300, 1e300, 0]"}) {
+    INFO("up " << up);
+    CHECK(errorOf(std::string(R"({"camera": {"up": )") + up + "}}").empty());
+    CHECK(errorOf(std::string(R"({"camera": {"up": )") + up + R"(, "position_end": [1, 0, 5]}})").empty());
+  }
+  CHECK(contains(errorOf(R"({"camera": {"up": [0, 0, 1e300]}})"), "camera.up"));
 }
 
 TEST_CASE("JSON syntax errors give line and column", "[scene][errors]") {

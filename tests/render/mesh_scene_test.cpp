@@ -264,6 +264,42 @@ TEST_CASE("a point cloud is refused for rendering with the reason", "[render][me
   fs::remove_all(dir);
 }
 
+TEST_CASE("a mesh's vertices stay within 1e15 where its object places them, as a triangle's do",
+          "[render][mesh]") {
+  fs::path dir = scratch();
+  // x = 1e10 is a float, and 1e10 * 1e5 is 1e15 exactly: the limit itself.
+  std::ofstream(dir / "far.obj") << "v 1e10 0 0\nv 1e10 1 0\nv 1e10 0 1\nf 1 2 3\n";
+  std::ofstream(dir / "huge.obj") << "v 0 0 0\nv 1 0 0\nv 0 1e20 0\nf 1 2 3\n";
+  auto load = [&](const std::string& objects) {
+    std::ofstream(dir / "scene.json") << R"({"objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}, )" +
+                                             objects + "]}";
+    return loadSceneFile((dir / "scene.json").string());
+  };
+  const std::string far = R"({"type": "mesh", "file": "far.obj")";
+  CHECK(load(far + "}").objects.size() == 2);
+  CHECK(load(far + R"(, "transform": {"scale": 1e5}})").objects.size() == 2);
+  CHECK_THROWS_WITH(load(far + R"(, "transform": {"scale": 1.000001e5}})"),
+                    Catch::Contains("objects[1]: vertices must have coordinates of at most 1e15") &&
+                        Catch::Contains("once placed by the object's transform") && Catch::Contains("vertex 0") &&
+                        Catch::Contains("far.obj"));
+  // A moving mesh stays in object space (the kernels move the rays): its file's
+  // coordinates are what the kernels take, as for a moving triangle.
+  CHECK(load(far + R"(, "transform": {"scale": 1e6}, "transform_end": {"scale": 1e6}})").objects.size() == 2);
+  CHECK_THROWS_WITH(load(R"({"type": "mesh", "file": "huge.obj"})"),
+                    Catch::Contains("objects[1]: vertices must have coordinates of at most 1e15") &&
+                        Catch::Contains("vertex 2"));
+  CHECK_THROWS_WITH(load(R"({"type": "mesh", "file": "huge.obj", "transform_end": {"translate": [1, 0, 0]}})"),
+                    Catch::Contains("vertex 2"));
+  // The same rule for a triangle, for comparison: the same words.
+  CHECK_THROWS_WITH(load(R"({"type": "triangle", "vertices": [[1e10, 0, 0], [1e10, 1, 0], [1e10, 0, 1]],
+                            "transform": {"scale": 1.000001e5}})"),
+                    Catch::Contains("objects[1]: vertices must have coordinates of at most 1e15"));
+  // A mesh rendered on its own is refused before its camera is placed.
+  CHECK_THROWS_WITH(sceneForMesh(MeshCache::global().load((dir / "huge.obj").string())),
+                    Catch::Contains("vertices must have coordinates of at most 1e15") && Catch::Contains("huge.obj"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("the quick-render camera frames the whole mesh", "[render][mesh]") {
   SmallMesh m = icosphere();
   fs::path dir = scratch();
