@@ -17,13 +17,22 @@ const char* lightTypeName(LightType type) {
   return "?";
 }
 
+double lightBrightness(const Light& l) { return std::fmax(l.color.x, std::fmax(l.color.y, l.color.z)) * l.intensity; }
+
+std::string lightsTogetherProblem(const std::vector<Light>& lights, const Light& added) {
+  double total = lightBrightness(added);
+  for (const Light& l : lights) total += lightBrightness(l);
+  if (total <= kMaxBrightness) return "";
+  return "color x intensity summed over the scene's " + std::to_string(lights.size() + 1) +
+         " lights must be at most 1e30 (float range: a point sums what every light gives it)";
+}
+
 std::string lightProblem(const Light& l) {
   std::string p = vectorProblem(l.color, "color");
   if (!p.empty()) return p;
   if (l.color.x < 0 || l.color.y < 0 || l.color.z < 0) return "color must be non-negative";
   if (!(std::isfinite(l.intensity) && l.intensity >= 0)) return "intensity must be a non-negative number";
-  const double brightest = std::fmax(l.color.x, std::fmax(l.color.y, l.color.z)) * l.intensity;
-  if (!(brightest <= 1e30)) return "color x intensity must be at most 1e30 (float range)";
+  if (!(lightBrightness(l) <= kMaxBrightness)) return "color x intensity must be at most 1e30 (float range)";
   if (l.samples < 1 || l.samples > kMaxLightSamples)
     return "samples must be an integer in [1, " + std::to_string(kMaxLightSamples) + "]";
   switch (l.type) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -13,6 +14,14 @@ constexpr int kMaxLightSamples = 4096;
 
 // "" when the light is usable, else what is wrong with it, naming the field.
 std::string lightProblem(const Light& light);
+
+// The brightest component of color x intensity, of one light and of all the
+// scene's lights together: a shaded point sums what every light gives it, so
+// the sum, not each light alone, must stay within kMaxBrightness.
+constexpr double kMaxBrightness = 1e30;
+double lightBrightness(const Light& light);
+// "" when `lights` and one more, `added`, stay within kMaxBrightness together.
+std::string lightsTogetherProblem(const std::vector<Light>& lights, const Light& added);
 
 // "point", "quad", "disk", "sphere".
 const char* lightTypeName(LightType type);

@@ -411,7 +411,8 @@ class SceneParser : private JsonReader {
         light.intensity = number(*p, member(at, "intensity"), "a non-negative number", nonNegative);
       if (const Json* p = find(l, "samples"); p && light.type != LightType::Point)  // a point needs one
         light.samples = int(integer(*p, member(at, "samples"), 1, kMaxLightSamples));
-      const std::string problem = lightProblem(light);
+      std::string problem = lightProblem(light);
+      if (problem.empty()) problem = lightsTogetherProblem(m_scene.lights, light);
       if (!problem.empty()) fail(at, problem);
       m_scene.lights.push_back(light);
     }

@@ -213,6 +213,15 @@ int main(int argc, char** argv) {
     CHECK(prismAddPointLight(scene, pos, white, NAN) == PRISM_ERROR_INVALID_ARGUMENT);
     CHECK(prismAddPointLight(scene, pos, white, INFINITY) == PRISM_ERROR_INVALID_ARGUMENT);
     CHECK(strstr(prismGetLastError(), "intensity") != NULL);
+    /* Each within 1e30 alone, but not together (in a scene of their own). */
+    {
+      PrismScene bright = NULL;
+      CHECK_OK(prismNewScene(&bright));
+      CHECK_OK(prismAddPointLight(bright, pos, white, 6e29f));
+      CHECK(prismAddPointLight(bright, pos, white, 6e29f) == PRISM_ERROR_INVALID_ARGUMENT);
+      CHECK(strstr(prismGetLastError(), "summed over the scene's 2 lights") != NULL);
+      prismReleaseScene(bright);
+    }
     m[3] = NAN;
     CHECK(prismAddMeshArrays(scene, tri, 3, idx, 1, NULL, m, NULL) == PRISM_ERROR_INVALID_ARGUMENT);
     CHECK(strstr(prismGetLastError(), "object_to_world") != NULL && strstr(prismGetLastError(), "finite") != NULL);

@@ -299,6 +299,12 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
        {"lights[0].type", "unknown light type 'spot'", "(expected point, quad, rect, disk, sphere)"}},
       {R"({"lights": [{"color": [1, 1, 1]}]})", {"lights[0]: missing required key 'position'"}},
       {R"({"lights": [{"position": [0, 0, 0], "intensity": -1}]})", {"lights[0].intensity", "got -1"}},
+      // What a shaded point gets from its lights stays a float: each light's brightest
+      // colour component times its intensity, and their sum over the scene.
+      {R"({"lights": [{"position": [0, 0, 0], "color": [1, 2, 1], "intensity": 6e29}]})",
+       {"lights[0]: color x intensity must be at most 1e30"}},
+      {R"({"lights": [{"position": [0, 0, 0], "intensity": 6e29}, {"position": [0, 0, 1], "intensity": 6e29}]})",
+       {"lights[1]: color x intensity summed over the scene's 2 lights must be at most 1e30"}},
       // objects
       {R"({"objects": [3]})", {"objects[0]: expected an object, got 3"}},
       {R"({"objects": [{"center": [0, 0, 0]}]})", {"objects[0]: missing required key 'type'"}},
@@ -368,6 +374,16 @@ TEST_CASE("the camera's up is any finite direction off the view direction, howev
     CHECK(errorOf(std::string(R"({"camera": {"up": )") + up + R"(, "position_end": [1, 0, 5]}})").empty());
   }
   CHECK(contains(errorOf(R"({"camera": {"up": [0, 0, 1e300]}})"), "camera.up"));
+}
+
+TEST_CASE("lights may be as bright as 1e30 together, and no brighter", "[scene][errors]") {
+  CHECK(errorOf(R"({"lights": [{"position": [0, 0, 0], "intensity": 1e30}]})").empty());
+  CHECK(errorOf(R"({"lights": [{"position": [0, 0, 0], "intensity": 5e29},
+                               {"type": "sphere", "center": [0, 0, 1], "radius": 1, "intensity": 5e29}]})")
+            .empty());
+  CHECK(contains(errorOf(R"({"lights": [{"position": [0, 0, 0], "intensity": 5e29},
+                                        {"type": "sphere", "center": [0, 0, 1], "radius": 1, "intensity": 5.1e29}]})"),
+                 "lights[1]: color x intensity summed over the scene's 2 lights"));
 }
 
 TEST_CASE("JSON syntax errors give line and column", "[scene][errors]") {
