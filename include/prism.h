@@ -230,7 +230,8 @@ PRISM_API PrismStatus prismSetCamera(PrismScene scene, const PrismCamera* camera
 PRISM_API PrismStatus prismNewScene(PrismScene* out_scene);
 /* A scene showing one mesh file: a camera framing its bounding box, a headlight,
  * a default material (docs/cli.md, "Rendering a mesh file"). Fails for a file with
- * no triangles. */
+ * no triangles, with vertices past 1e15 in magnitude, or too large for a camera
+ * within 1e15 to frame. */
 PRISM_API PrismStatus prismLoadMeshAsScene(const char* path, PrismScene* out_scene);
 /* Adds a point light. */
 PRISM_API PrismStatus prismAddPointLight(PrismScene scene, const float position[3], const float color[3],
@@ -264,7 +265,9 @@ PRISM_API PrismStatus prismAddAreaLight(PrismScene scene, const PrismAreaLight* 
 PRISM_API PrismStatus prismAddMeshFile(PrismScene scene, const char* path, const char* material,
                                        const float* object_to_world, int smooth, uint32_t* out_object);
 /* Adds a mesh from caller-owned arrays, which are copied: `positions` holds
- * vertex_count xyz triples, `indices` 3 per triangle. Same checks as a file. */
+ * vertex_count xyz triples, `indices` 3 per triangle. Same checks as a file; for
+ * both, the vertices that faces use must lie within 1e15 in magnitude once
+ * placed by `object_to_world`. */
 PRISM_API PrismStatus prismAddMeshArrays(PrismScene scene, const float* positions, size_t vertex_count,
                                          const uint32_t* indices, size_t triangle_count, const char* material,
                                          const float* object_to_world, uint32_t* out_object);

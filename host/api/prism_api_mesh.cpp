@@ -50,7 +50,7 @@ PrismStatus addMesh(PrismScene scene, const SharedMesh& mesh, const char* materi
     return fail(PRISM_ERROR_INVALID_ARGUMENT,
                 mesh->source + ": holds no faces (a point cloud?): nothing to render");
   Transform t = transformFrom(matrix);
-  const std::string placement = meshPlacementProblem(*mesh, t, false);
+  const std::string placement = meshPlacementProblem(*mesh, t, nullptr);
   if (!placement.empty()) throw std::invalid_argument(placement);  // named after the call, as the transform's
   int m = materialIndex(scene->scene, material);
   addMeshObject(scene->scene, mesh, m, t, smooth != 0);

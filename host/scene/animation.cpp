@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/camera_check.h"
+#include "scene/mesh_objects.h"
 #include "scene/motion.h"
 #include "scene/primitives/primitive_kind.h"
 #include "scene/transform.h"
@@ -89,7 +90,13 @@ Scene sceneAtFrame(const Scene& scene, std::uint32_t frame_number) {
         throw std::invalid_argument("frame " + std::to_string(frame) + " of the animation: objects[" +
                                     std::to_string(i) + "]: its transform there: " + problem);
     }
-    if (blurred || ob.type == ObjectType::Mesh) continue;
+    if (blurred) continue;
+    if (ob.type == ObjectType::Mesh) {  // placed by the flattening where the frame holds it
+      if (const std::string problem = meshPlacementProblem(*ob.mesh, ob.transform, nullptr); !problem.empty())
+        throw std::invalid_argument("frame " + std::to_string(frame) + " of the animation: objects[" +
+                                    std::to_string(i) + "]: " + problem);
+      continue;
+    }
     // Held still, it is what the loader makes of a static object: the kinds the
     // kernels keep in world space take the transform into their geometry.
     const PrimitiveKind& kind = primitiveKind(ob.type);

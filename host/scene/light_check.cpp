@@ -19,11 +19,9 @@ const char* lightTypeName(LightType type) {
 
 double lightBrightness(const Light& l) { return std::fmax(l.color.x, std::fmax(l.color.y, l.color.z)) * l.intensity; }
 
-std::string lightsTogetherProblem(const std::vector<Light>& lights, const Light& added) {
-  double total = lightBrightness(added);
-  for (const Light& l : lights) total += lightBrightness(l);
+std::string lightsTogetherProblem(double total, std::size_t count) {
   if (total <= kMaxBrightness) return "";
-  return "color x intensity summed over the scene's " + std::to_string(lights.size() + 1) +
+  return "color x intensity summed over the scene's " + std::to_string(count) +
          " lights must be at most 1e30 (float range: a point sums what every light gives it)";
 }
 

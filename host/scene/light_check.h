@@ -2,8 +2,8 @@
 // JSON path) and the C API, so both give the same rule and the same message.
 #pragma once
 
+#include <cstddef>
 #include <string>
-#include <vector>
 
 #include "scene/scene.h"
 
@@ -20,8 +20,8 @@ std::string lightProblem(const Light& light);
 // the sum, not each light alone, must stay within kMaxBrightness.
 constexpr double kMaxBrightness = 1e30;
 double lightBrightness(const Light& light);
-// "" when `lights` and one more, `added`, stay within kMaxBrightness together.
-std::string lightsTogetherProblem(const std::vector<Light>& lights, const Light& added);
+// "" when the brightness of `count` lights summed, `total`, is within kMaxBrightness.
+std::string lightsTogetherProblem(double total, std::size_t count);
 
 // "point", "quad", "disk", "sphere".
 const char* lightTypeName(LightType type);

@@ -7,6 +7,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "scene/camera_check.h"
 #include "scene/primitives/polygon_shape.h"
 #include "scene/value_check.h"
 
@@ -39,21 +40,36 @@ void attachDiffuseMaps(Scene& scene, std::size_t first, const std::string& sourc
 
 }  // namespace
 
-std::string meshPlacementProblem(const TriangleMesh& mesh, const Transform& transform, bool moving) {
-  // As the flattening places them (render/gpu_scene.cpp, appendMesh).
-  const bool placed = !moving && !transform.isIdentity();
-  for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
-    const Vec3 raw{mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]};
-    const Vec3 p = placed ? transform.applyPoint(raw) : raw;
-    std::string problem = vectorProblem(p, "vertices");
-    if (problem.empty()) continue;
-    char at[96];
-    std::snprintf(at, sizeof at, "(%.9g, %.9g, %.9g)", p.x, p.y, p.z);
-    // A mesh from a file names it; one from a caller's arrays is the call's.
-    const std::string of = mesh.plugin.empty() ? "" : " of '" + mesh.source + "'";
-    return problem + (placed ? " once placed by the object's transform" : "") + ": vertex " + std::to_string(v) +
-           of + " lies at " + at;
+std::string meshPlacementProblem(const TriangleMesh& mesh, const Transform& transform,
+                                 const Transform* transform_end) {
+  // Where the flattening may put them (render/gpu_scene.cpp, appendMesh), and
+  // as the file has them: a vertex no face uses is never placed.
+  std::vector<char> used(mesh.vertexCount(), 0);
+  for (std::uint32_t v : mesh.indices) used[v] = 1;
+  struct Placement {
+    const Transform* transform;
+    const char* words;
+  };
+  const bool placed = !transform.isIdentity();
+  std::vector<Placement> placements = {placed ? Placement{&transform, " once placed by the object's transform"}
+                                              : Placement{nullptr, ""}};
+  if (transform_end) {
+    placements.push_back({transform_end, " once placed by the object's transform_end"});
+    if (placed) placements.push_back({nullptr, " as the mesh has them (a moving mesh's)"});
   }
+  for (const Placement& placement : placements)
+    for (std::size_t v = 0; v < used.size(); ++v) {
+      if (!used[v]) continue;
+      const Vec3 raw{mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]};
+      const Vec3 p = placement.transform ? placement.transform->applyPoint(raw) : raw;
+      const std::string problem = vectorProblem(p, "vertices");
+      if (problem.empty()) continue;
+      char at[96];
+      std::snprintf(at, sizeof at, "(%.9g, %.9g, %.9g)", p.x, p.y, p.z);
+      // A mesh from a file names it; one from a caller's arrays is the call's.
+      const std::string of = mesh.plugin.empty() ? "" : " of '" + mesh.source + "'";
+      return problem + placement.words + ": vertex " + std::to_string(v) + of + " lies at " + at;
+    }
   return "";
 }
 
@@ -116,7 +132,7 @@ Scene sceneForMesh(const SharedMesh& mesh) {
   if (mesh->triangleCount() == 0)
     throw std::invalid_argument(mesh->source + ": holds " + std::to_string(mesh->vertexCount()) +
                                 " vertices and no faces (a point cloud?): nothing to render");
-  const std::string placement = meshPlacementProblem(*mesh, Transform::identity(), false);
+  const std::string placement = meshPlacementProblem(*mesh, Transform::identity(), nullptr);
   if (!placement.empty()) throw std::invalid_argument(placement);  // (it names the file)
   Vec3 lo = Vec3::splat(std::numeric_limits<double>::infinity()), hi = -lo;
   for (std::size_t i = 0; i < mesh->indices.size(); ++i) {
@@ -142,6 +158,11 @@ Scene sceneForMesh(const SharedMesh& mesh) {
   scene.camera.look_at = centre;
   scene.camera.position = centre + normalize(Vec3{0.35, 0.4, 1.0}) * distance;
   scene.camera.up = {0, 1, 0};
+  // The camera (and the headlight with it) stands 2.9 bounding radii out: a
+  // mesh within the limit may still be too large to frame within it.
+  if (const std::string problem = cameraProblem(scene.camera); !problem.empty())
+    throw std::invalid_argument(mesh->source + ": too large to frame: the camera that shows it whole fails its check: " +
+                                problem);
   scene.film.width = 800;
   scene.film.height = 600;
   scene.render.ambient = {0.15, 0.15, 0.15};

@@ -15,13 +15,16 @@ namespace prism {
 // (and the default material where the file gives none); otherwise it overrides them.
 Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const Transform& transform, bool smooth);
 
-// "" when every vertex of the mesh lies within the coordinates the kernels
-// take (scene/value_check.h) where the object puts it: placed in world space by
-// `transform`, or, for a moving object, whose triangles stay in object space
-// (the kernels move the rays instead), as the mesh has it. Else the problem,
-// naming the first vertex past the limit. The scene loader and the C API both
-// ask before adding a mesh object.
-std::string meshPlacementProblem(const TriangleMesh& mesh, const Transform& transform, bool moving);
+// "" when every vertex of the mesh's faces lies within the coordinates the
+// kernels take (scene/value_check.h) wherever the object may put it: placed in
+// world space by `transform`, and, for a moving object (`transform_end` given),
+// by `transform_end` and as the mesh has it too (with the shutter open its
+// triangles stay in object space and the kernels move the rays; with it closed,
+// or on a frame held still, the flattening places them). Else the problem,
+// naming the first vertex past the limit. The scene loader, the C API and an
+// animation's frames all ask before a mesh object is rendered.
+std::string meshPlacementProblem(const TriangleMesh& mesh, const Transform& transform,
+                                 const Transform* transform_end);
 
 // The vertex indices, and the positions, of the face that starts at triangle
 // `first_triangle` of the mesh's fan, in file order.

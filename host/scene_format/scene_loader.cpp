@@ -30,6 +30,7 @@
 #include "scene/primitives/primitive_kind.h"
 #include "scene/render_modes.h"
 #include "scene/sampling_options.h"
+#include "scene/value_check.h"
 
 namespace prism {
 
@@ -101,6 +102,9 @@ class SceneParser : private JsonReader {
     if (const Json* p = find(v, "fov"))
       c.fov =
           number(*p, member(path, "fov"), "a number in (0, 180)", [](double x) { return x > 0 && x < 180; });
+    // Points first: the up check below takes their difference.
+    for (auto [point, key] : {std::pair{&c.position, "position"}, std::pair{&c.look_at, "look_at"}})
+      if (const std::string p = vectorProblem(*point, key); !p.empty()) fail(path, p);
     const Vec3 view = c.look_at - c.position;
     if (view == Vec3())
       fail(member(path, "look_at"),
@@ -376,6 +380,8 @@ class SceneParser : private JsonReader {
     if (!v.is_array()) expected(path, "an array of lights", v);
     static const Check nonNegative = [](double x) { return x >= 0; };
     static const Check positive = [](double x) { return x > 0; };
+    double brightness = 0;  // of the scene's lights together (scene/light_check.h)
+    for (const Light& l : m_scene.lights) brightness += lightBrightness(l);
     for (std::size_t i = 0; i < v.size(); ++i) {
       const std::string at = element(path, m_scene.lights.size());  // its index in the scene
       const Json& l = v[i];
@@ -411,8 +417,9 @@ class SceneParser : private JsonReader {
         light.intensity = number(*p, member(at, "intensity"), "a non-negative number", nonNegative);
       if (const Json* p = find(l, "samples"); p && light.type != LightType::Point)  // a point needs one
         light.samples = int(integer(*p, member(at, "samples"), 1, kMaxLightSamples));
+      brightness += lightBrightness(light);
       std::string problem = lightProblem(light);
-      if (problem.empty()) problem = lightsTogetherProblem(m_scene.lights, light);
+      if (problem.empty()) problem = lightsTogetherProblem(brightness, m_scene.lights.size() + 1);
       if (!problem.empty()) fail(at, problem);
       m_scene.lights.push_back(light);
     }
@@ -424,7 +431,7 @@ class SceneParser : private JsonReader {
       const std::string at = element(path, m_scene.objects.size());  // its index in the scene
       Object o = parseObject(v[i], at);
       if (o.type == ObjectType::Mesh) {
-        const std::string problem = meshPlacementProblem(*o.mesh, o.transform, o.moving);
+        const std::string problem = meshPlacementProblem(*o.mesh, o.transform, o.moving ? &o.transform_end : nullptr);
         if (!problem.empty()) fail(at, problem);
         Object& mesh = addMeshObject(m_scene, o.mesh, o.material_override ? o.material : -1, o.transform, o.smooth);
         mesh.moving = o.moving;

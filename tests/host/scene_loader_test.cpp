@@ -266,6 +266,8 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
       // enough out, the up check must not be what refuses it.
       {R"({"camera": {"position": [0, 0, 1e20]}})", {"camera: position must have coordinates of at most 1e15"}},
       {R"({"camera": {"position": [0, 0, 1e300]}})", {"camera: position must have coordinates of at most 1e15"}},
+      {R"({"camera": {"position": [0, 0, 1.5e308], "look_at": [0, 0, -1.5e308]}})",
+       {"camera: position must have coordinates of at most 1e15"}},
       {R"({"camera": {"look_at": [-1e16, 0, 0]}})", {"camera: look_at must have coordinates of at most 1e15"}},
       {R"({"camera": {"position_end": [0, 0, 1e20]}})",
        {"camera: position_end must have coordinates of at most 1e15"}},

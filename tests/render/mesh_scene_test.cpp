@@ -15,6 +15,7 @@
 #include "mesh/mesh_cache.h"
 #include "render/gpu_scene.h"
 #include "render/renderer.h"
+#include "scene/animation.h"
 #include "scene/mesh_objects.h"
 #include "scene_format/scene_loader.h"
 #include "support/shared_context.h"
@@ -282,21 +283,47 @@ TEST_CASE("a mesh's vertices stay within 1e15 where its object places them, as a
                     Catch::Contains("objects[1]: vertices must have coordinates of at most 1e15") &&
                         Catch::Contains("once placed by the object's transform") && Catch::Contains("vertex 0") &&
                         Catch::Contains("far.obj"));
-  // A moving mesh stays in object space (the kernels move the rays): its file's
-  // coordinates are what the kernels take, as for a moving triangle.
-  CHECK(load(far + R"(, "transform": {"scale": 1e6}, "transform_end": {"scale": 1e6}})").objects.size() == 2);
+  // A moving mesh is placed at both ends (where the flattening puts it when the
+  // shutter is closed), and taken as the file has it when the shutter is open
+  // (the kernels move the rays into its object space).
+  CHECK(load(far + R"(, "transform": {"scale": 1e5}, "transform_end": {"scale": 1e5}})").objects.size() == 2);
+  CHECK_THROWS_WITH(load(far + R"(, "transform": {"scale": 1e5}, "transform_end": {"scale": 1.000001e5}})"),
+                    Catch::Contains("once placed by the object's transform_end") && Catch::Contains("vertex 0"));
+  CHECK_THROWS_WITH(load(far + R"(, "transform": {"scale": 1.000001e5}, "transform_end": {"scale": 1e5}})"),
+                    Catch::Contains("once placed by the object's transform:"));
   CHECK_THROWS_WITH(load(R"({"type": "mesh", "file": "huge.obj"})"),
                     Catch::Contains("objects[1]: vertices must have coordinates of at most 1e15") &&
                         Catch::Contains("vertex 2"));
-  CHECK_THROWS_WITH(load(R"({"type": "mesh", "file": "huge.obj", "transform_end": {"translate": [1, 0, 0]}})"),
-                    Catch::Contains("vertex 2"));
+  CHECK_THROWS_WITH(load(R"({"type": "mesh", "file": "huge.obj", "transform": {"scale": 1e-10},
+                            "transform_end": {"scale": 1e-10}})"),
+                    Catch::Contains("as the mesh has them") && Catch::Contains("vertex 2"));
+  // A vertex no face uses is never placed.
+  std::ofstream(dir / "stray.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e30 0 0\nf 1 2 3\n";
+  CHECK(load(R"({"type": "mesh", "file": "stray.obj"})").objects.size() == 2);
   // The same rule for a triangle, for comparison: the same words.
   CHECK_THROWS_WITH(load(R"({"type": "triangle", "vertices": [[1e10, 0, 0], [1e10, 1, 0], [1e10, 0, 1]],
                             "transform": {"scale": 1.000001e5}})"),
                     Catch::Contains("objects[1]: vertices must have coordinates of at most 1e15"));
-  // A mesh rendered on its own is refused before its camera is placed.
+  // A mesh rendered on its own is refused before its camera is placed, and so is
+  // one within the limit whose framing camera would stand past it.
   CHECK_THROWS_WITH(sceneForMesh(MeshCache::global().load((dir / "huge.obj").string())),
                     Catch::Contains("vertices must have coordinates of at most 1e15") && Catch::Contains("huge.obj"));
+  std::ofstream(dir / "wide.obj") << "v -4e14 0 0\nv 4e14 0 0\nv 0 4e14 0\nf 1 2 3\n";
+  CHECK_THROWS_WITH(sceneForMesh(MeshCache::global().load((dir / "wide.obj").string())),
+                    Catch::Contains("too large to frame") && Catch::Contains("position"));
+  // An animation's frame held still places a moving mesh where its path is then:
+  // a quarter turn takes (9.9e14, 9.9e14, 0) to (-9.9e14, 9.9e14, 0), and halfway,
+  // to (0, 1.4e15, 0).
+  std::ofstream(dir / "corner.obj") << "v 9.9e14 9.9e14 0\nv 9.9e14 9e14 0\nv 9e14 9.9e14 0\nf 1 2 3\n";
+  std::ofstream(dir / "turning.json") << R"({"animation": {"frames": 3},
+      "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1},
+                  {"type": "mesh", "file": "corner.obj", "transform_end": {"rotate": {"axis": [0, 0, 1], "angle": 90}}}]})";
+  const Scene turning = loadSceneFile((dir / "turning.json").string());
+  CHECK_NOTHROW(sceneAtFrame(turning, 0));
+  CHECK_NOTHROW(sceneAtFrame(turning, 2));
+  CHECK_THROWS_WITH(sceneAtFrame(turning, 1), Catch::Contains("frame 1 of the animation: objects[1]: vertices must have "
+                                                              "coordinates of at most 1e15") &&
+                                                  Catch::Contains("vertex 0"));
   fs::remove_all(dir);
 }
 
