@@ -92,7 +92,8 @@ Scene sceneAtFrame(const Scene& scene, std::uint32_t frame_number) {
     }
     if (blurred) continue;
     if (ob.type == ObjectType::Mesh) {  // placed by the flattening where the frame holds it
-      if (const std::string problem = meshPlacementProblem(*ob.mesh, ob.transform, nullptr); !problem.empty())
+      if (const std::string problem = meshPlacementProblem(*ob.mesh, ob.transform, nullptr, "transform at this frame");
+          !problem.empty())
         throw std::invalid_argument("frame " + std::to_string(frame) + " of the animation: objects[" +
                                     std::to_string(i) + "]: " + problem);
       continue;

@@ -41,20 +41,20 @@ void attachDiffuseMaps(Scene& scene, std::size_t first, const std::string& sourc
 }  // namespace
 
 std::string meshPlacementProblem(const TriangleMesh& mesh, const Transform& transform,
-                                 const Transform* transform_end) {
+                                 const Transform* transform_end, const char* transform_name) {
   // Where the flattening may put them (render/gpu_scene.cpp, appendMesh), and
   // as the file has them: a vertex no face uses is never placed.
   std::vector<char> used(mesh.vertexCount(), 0);
   for (std::uint32_t v : mesh.indices) used[v] = 1;
   struct Placement {
-    const Transform* transform;
-    const char* words;
+    const Transform* transform;  // none: as the mesh has them
+    std::string words;
   };
   const bool placed = !transform.isIdentity();
-  std::vector<Placement> placements = {placed ? Placement{&transform, " once placed by the object's transform"}
-                                              : Placement{nullptr, ""}};
+  std::vector<Placement> placements = {
+      placed ? Placement{&transform, std::string(" once placed by the object's ") + transform_name} : Placement{}};
   if (transform_end) {
-    placements.push_back({transform_end, " once placed by the object's transform_end"});
+    if (!transform_end->isIdentity()) placements.push_back({transform_end, " once placed by the object's transform_end"});
     if (placed) placements.push_back({nullptr, " as the mesh has them (a moving mesh's)"});
   }
   for (const Placement& placement : placements)
@@ -154,15 +154,24 @@ Scene sceneForMesh(const SharedMesh& mesh) {
 
   scene.camera.fov = 40;
   const double pi = 3.14159265358979323846;
-  const double distance = radius / std::sin(scene.camera.fov * pi / 360.0) / 0.9;
+  double distance = radius / std::sin(scene.camera.fov * pi / 360.0) / 0.9;
+  const Vec3 away = normalize(Vec3{0.35, 0.4, 1.0});
+  // The camera (and the headlight with it) stands about 3.25 bounding radii
+  // out, but no farther than the coordinates a camera may have (1e15): a mesh
+  // near that size is shown from closer, not refused, since `prism trace` and a
+  // render with its own camera flags load it this way too.
+  double closest_limit = distance;
+  for (int i = 0; i < 3; ++i) closest_limit = std::min(closest_limit, (kMaxCoordinate - centre[i]) / away[i]);
+  if (closest_limit < distance) {
+    distance = closest_limit * (1 - 1e-9);
+    scene.warnings.push_back(mesh->source +
+                             ": too large to show whole from a camera within 1e15 of the origin: the camera stands closer");
+  }
   scene.camera.look_at = centre;
-  scene.camera.position = centre + normalize(Vec3{0.35, 0.4, 1.0}) * distance;
+  scene.camera.position = centre + away * distance;
   scene.camera.up = {0, 1, 0};
-  // The camera (and the headlight with it) stands 2.9 bounding radii out: a
-  // mesh within the limit may still be too large to frame within it.
   if (const std::string problem = cameraProblem(scene.camera); !problem.empty())
-    throw std::invalid_argument(mesh->source + ": too large to frame: the camera that shows it whole fails its check: " +
-                                problem);
+    throw std::invalid_argument(mesh->source + ": no camera within 1e15 of the origin can frame it: " + problem);
   scene.film.width = 800;
   scene.film.height = 600;
   scene.render.ambient = {0.15, 0.15, 0.15};
@@ -174,7 +183,7 @@ Scene sceneForMesh(const SharedMesh& mesh) {
   scene.lights.push_back(headlight);
 
   addMeshObject(scene, mesh, -1, Transform::identity(), !mesh->normals.empty());
-  scene.warnings = mesh->warnings;
+  scene.warnings.insert(scene.warnings.begin(), mesh->warnings.begin(), mesh->warnings.end());
   return scene;
 }
 

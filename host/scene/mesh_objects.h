@@ -23,8 +23,9 @@ Object& addMeshObject(Scene& scene, const SharedMesh& mesh, int material, const 
 // or on a frame held still, the flattening places them). Else the problem,
 // naming the first vertex past the limit. The scene loader, the C API and an
 // animation's frames all ask before a mesh object is rendered.
+// `transform_name` names `transform` in the message.
 std::string meshPlacementProblem(const TriangleMesh& mesh, const Transform& transform,
-                                 const Transform* transform_end);
+                                 const Transform* transform_end, const char* transform_name = "transform");
 
 // The vertex indices, and the positions, of the face that starts at triangle
 // `first_triangle` of the mesh's fan, in file order.

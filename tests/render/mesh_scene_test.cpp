@@ -16,6 +16,8 @@
 #include "render/gpu_scene.h"
 #include "render/renderer.h"
 #include "scene/animation.h"
+#include "scene/camera_check.h"
+#include "scene/light_check.h"
 #include "scene/mesh_objects.h"
 #include "scene_format/scene_loader.h"
 #include "support/shared_context.h"
@@ -304,13 +306,20 @@ TEST_CASE("a mesh's vertices stay within 1e15 where its object places them, as a
   CHECK_THROWS_WITH(load(R"({"type": "triangle", "vertices": [[1e10, 0, 0], [1e10, 1, 0], [1e10, 0, 1]],
                             "transform": {"scale": 1.000001e5}})"),
                     Catch::Contains("objects[1]: vertices must have coordinates of at most 1e15"));
-  // A mesh rendered on its own is refused before its camera is placed, and so is
-  // one within the limit whose framing camera would stand past it.
+  // A mesh rendered on its own is refused before its camera is placed. One within
+  // the limit whose framing camera would stand past it (about 3.25 bounding radii
+  // out: z near 1.28e15 here) is shown from a camera at the limit instead, with a
+  // warning, as the camera check asks.
   CHECK_THROWS_WITH(sceneForMesh(MeshCache::global().load((dir / "huge.obj").string())),
                     Catch::Contains("vertices must have coordinates of at most 1e15") && Catch::Contains("huge.obj"));
   std::ofstream(dir / "wide.obj") << "v -4e14 0 0\nv 4e14 0 0\nv 0 4e14 0\nf 1 2 3\n";
-  CHECK_THROWS_WITH(sceneForMesh(MeshCache::global().load((dir / "wide.obj").string())),
-                    Catch::Contains("too large to frame") && Catch::Contains("position"));
+  const Scene wide = sceneForMesh(MeshCache::global().load((dir / "wide.obj").string()));
+  CHECK(cameraProblem(wide.camera).empty());
+  CHECK(wide.camera.position.z > 9.99e14);
+  REQUIRE(wide.warnings.size() == 1);
+  CHECK_THAT(wide.warnings[0], Catch::Contains("wide.obj") && Catch::Contains("too large to show whole"));
+  REQUIRE(wide.lights.size() == 1);
+  CHECK(lightProblem(wide.lights[0]).empty());
   // An animation's frame held still places a moving mesh where its path is then:
   // a quarter turn takes (9.9e14, 9.9e14, 0) to (-9.9e14, 9.9e14, 0), and halfway,
   // to (0, 1.4e15, 0).
@@ -323,7 +332,7 @@ TEST_CASE("a mesh's vertices stay within 1e15 where its object places them, as a
   CHECK_NOTHROW(sceneAtFrame(turning, 2));
   CHECK_THROWS_WITH(sceneAtFrame(turning, 1), Catch::Contains("frame 1 of the animation: objects[1]: vertices must have "
                                                               "coordinates of at most 1e15") &&
-                                                  Catch::Contains("vertex 0"));
+                                                  Catch::Contains("the object's transform at this frame: vertex 0"));
   fs::remove_all(dir);
 }
 
