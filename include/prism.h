@@ -231,7 +231,8 @@ PRISM_API PrismStatus prismNewScene(PrismScene* out_scene);
 /* A scene showing one mesh file, as `prism render MESH` does: a camera framing its
  * bounding box, a headlight, a default material. Fails for a file with no
  * triangles or with vertices past 1e15 in magnitude; a mesh too large for a
- * camera within 1e15 to show whole is shown from closer, with a warning. */
+ * camera of coordinates within 1e15 to show whole is shown from closer, with a
+ * warning. */
 PRISM_API PrismStatus prismLoadMeshAsScene(const char* path, PrismScene* out_scene);
 /* Adds a point light. */
 PRISM_API PrismStatus prismAddPointLight(PrismScene scene, const float position[3], const float color[3],

@@ -160,18 +160,18 @@ Scene sceneForMesh(const SharedMesh& mesh) {
   // out, but no farther than the coordinates a camera may have (1e15): a mesh
   // near that size is shown from closer, not refused, since `prism trace` and a
   // render with its own camera flags load it this way too.
-  double closest_limit = distance;
-  for (int i = 0; i < 3; ++i) closest_limit = std::min(closest_limit, (kMaxCoordinate - centre[i]) / away[i]);
-  if (closest_limit < distance) {
-    distance = closest_limit * (1 - 1e-9);
+  double farthest_allowed = distance;
+  for (int i = 0; i < 3; ++i) farthest_allowed = std::min(farthest_allowed, (kMaxCoordinate - centre[i]) / away[i]);
+  if (farthest_allowed < distance) {
+    distance = farthest_allowed * (1 - 1e-9);
     scene.warnings.push_back(mesh->source +
-                             ": too large to show whole from a camera within 1e15 of the origin: the camera stands closer");
+                             ": too large to show whole from a camera of coordinates within 1e15: the camera stands closer");
   }
   scene.camera.look_at = centre;
   scene.camera.position = centre + away * distance;
   scene.camera.up = {0, 1, 0};
   if (const std::string problem = cameraProblem(scene.camera); !problem.empty())
-    throw std::invalid_argument(mesh->source + ": no camera within 1e15 of the origin can frame it: " + problem);
+    throw std::invalid_argument(mesh->source + ": no camera of coordinates within 1e15 can frame it: " + problem);
   scene.film.width = 800;
   scene.film.height = 600;
   scene.render.ambient = {0.15, 0.15, 0.15};

@@ -319,6 +319,7 @@ TEST_CASE("a mesh's vertices stay within 1e15 where its object places them, as a
   REQUIRE(wide.warnings.size() == 1);
   CHECK_THAT(wide.warnings[0], Catch::Contains("wide.obj") && Catch::Contains("too large to show whole"));
   REQUIRE(wide.lights.size() == 1);
+  CHECK(wide.lights[0].position == wide.camera.position);  // the headlight
   CHECK(lightProblem(wide.lights[0]).empty());
   // An animation's frame held still places a moving mesh where its path is then:
   // a quarter turn takes (9.9e14, 9.9e14, 0) to (-9.9e14, 9.9e14, 0), and halfway,
