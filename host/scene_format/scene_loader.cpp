@@ -203,6 +203,16 @@ class SceneParser : private JsonReader {
     expected(path, "a non-negative integer", v);
   }
 
+  // A render setting that names one of a fixed list; `parse` says whether the name is on it.
+  template <typename Mode>
+  std::string namedMode(const Json& v, const std::string& path, const char* names, const char* noun,
+                        bool (*parse)(const std::string&, Mode*)) const {
+    const std::string name = string(v, path, std::string("a string (") + names + ")");
+    Mode mode;
+    if (!parse(name, &mode)) fail(path, "unknown " + std::string(noun) + " '" + name + "' (expected " + names + ")");
+    return name;
+  }
+
   void parseRender(const Json& v, const std::string& path) {
     checkObject(v, path,
                 {"max_depth", "min_weight", "ambient", "background", "seed", "accel", "first_hit", "inside_test",
@@ -223,34 +233,14 @@ class SceneParser : private JsonReader {
              "unknown acceleration structure '" + name + "' (expected auto, bvh, octree, bsp, none)");
       r.accel = name;
     }
-    if (const Json* p = find(v, "first_hit")) {
-      const std::string name = string(*p, member(path, "first_hit"), std::string("a string (") + kFirstHitModeNames + ")");
-      FirstHitMode mode;
-      if (!tryParseFirstHitMode(name, &mode))
-        fail(member(path, "first_hit"), "unknown first-hit mode '" + name + "' (expected " + kFirstHitModeNames + ")");
-      r.first_hit = name;
-    }
-    if (const Json* p = find(v, "inside_test")) {
-      const std::string name = string(*p, member(path, "inside_test"), std::string("a string (") + kInsideTestNames + ")");
-      InsideTest test;
-      if (!tryParseInsideTest(name, &test))
-        fail(member(path, "inside_test"), "unknown inside test '" + name + "' (expected " + kInsideTestNames + ")");
-      r.inside_test = name;
-    }
-    if (const Json* p = find(v, "shadows")) {
-      const std::string name = string(*p, member(path, "shadows"), std::string("a string (") + kShadowModeNames + ")");
-      ShadowMode mode;
-      if (!tryParseShadowMode(name, &mode))
-        fail(member(path, "shadows"), "unknown shadow mode '" + name + "' (expected " + kShadowModeNames + ")");
-      r.shadows = name;
-    }
-    if (const Json* p = find(v, "bounds")) {
-      const std::string name = string(*p, member(path, "bounds"), std::string("a string (") + kBoundsKindNames + ")");
-      BoundsKind kind;
-      if (!tryParseBoundsKind(name, &kind))
-        fail(member(path, "bounds"), "unknown bounds '" + name + "' (expected " + kBoundsKindNames + ")");
-      r.bounds = name;
-    }
+    if (const Json* p = find(v, "first_hit"))
+      r.first_hit = namedMode(*p, member(path, "first_hit"), kFirstHitModeNames, "first-hit mode", tryParseFirstHitMode);
+    if (const Json* p = find(v, "inside_test"))
+      r.inside_test = namedMode(*p, member(path, "inside_test"), kInsideTestNames, "inside test", tryParseInsideTest);
+    if (const Json* p = find(v, "shadows"))
+      r.shadows = namedMode(*p, member(path, "shadows"), kShadowModeNames, "shadow mode", tryParseShadowMode);
+    if (const Json* p = find(v, "bounds"))
+      r.bounds = namedMode(*p, member(path, "bounds"), kBoundsKindNames, "bounds", tryParseBoundsKind);
     if (const Json* p = find(v, "device")) {
       const std::string selector =
           string(*p, member(path, "device"), "a string (an index, cpu, gpu, part of a name, all, or a list such as 0,2)");
