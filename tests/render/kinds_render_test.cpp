@@ -175,17 +175,40 @@ TEST_CASE("bad quadrics are refused with the reason", "[render][quadric][scene]"
        "one of the first nine must be non-zero"},
       {R"({"type": "quadric", "coefficients": [1, 1, 1, 0, 0, 0, 0, 0, 0, -1], "clip": {"min": [1, -1, -1], "max": [1, 1, 1]}})",
        "objects[0].clip.max: expected max > min on every axis"},
-      {R"({"type": "cylinder", "radius": -1})", "objects[0].radius: expected a positive number, got -1"},
+      {R"({"type": "cylinder", "radius": -1})", "objects[0].radius: expected a positive number of at most 1e15, got -1"},
       {R"({"type": "hyperboloid", "radius": 2, "top_radius": 1})", "objects[0].top_radius: expected more than radius"},
       {R"({"type": "hyperboloid", "sheets": 2, "vertex": 3, "height": 1})", "objects[0].height: expected more than vertex"},
       {R"({"type": "hyperboloid", "sheets": 3})", "objects[0].sheets: expected an integer in [1, 2]"},
-      {R"({"type": "ellipsoid", "radii": [1, 0, 1]})", "objects[0].radii[1]: expected a positive number, got 0"},
+      {R"({"type": "ellipsoid", "radii": [1, 0, 1]})", "objects[0].radii[1]: expected a positive number of at most 1e15, got 0"},
       {R"({"type": "quadric", "coefficients": [1, 1, 1, 0, 0, 0, 0, 0, 0, -1],
            "clip": {"min": [-1, -1, -1], "max": [1, 1, 1e300]}})", "clip.max must have coordinates of at most 1e15"},
+      // A preset's sizes are lengths bounding its clip box: refused under the key written.
+      {R"({"type": "cylinder", "radius": 1e300})", "objects[0].radius: expected a positive number of at most 1e15"},
+      {R"({"type": "cone", "height": 2e15})", "objects[0].height: expected a positive number of at most 1e15"},
+      {R"({"type": "ellipsoid", "radii": [1, 1, 1.1e15]})", "objects[0].radii[2]: expected a positive number of at most 1e15"},
+      // Each within bounds, together past what float keeps: named with the preset's sizes.
+      {R"({"type": "ellipsoid", "radii": [1e-200, 1, 1]})", "objects[0]: the sizes radii [1e-200, 1, 1] make a quadric"},
+      {R"({"type": "cone", "radius": 1e10, "height": 1e-10})",
+       "objects[0]: the sizes radius 10000000000, height 1e-10 make a quadric prism cannot hold: coefficients span"},
+      // A coefficient that the kernel's scaling to a largest magnitude of 1
+      // would put below float's smallest normal (2^-126, about 1.18e-38).
+      {R"({"type": "quadric", "coefficients": [1, 1e-38, 1, 0, 0, 0, 0, 0, 0, -1], "clip": {"min": [-1, -1, -1], "max": [1, 1, 1]}})",
+       "objects[0]: coefficients span more than float holds: 1e-38 beside 1"},
+      {R"({"type": "quadric", "coefficients": [1e30, 1e-9, 1, 0, 0, 0, 0, 0, 0, -1], "clip": {"min": [-1, -1, -1], "max": [1, 1, 1]}})",
+       "coefficients span more than float holds: 1e-09 beside 1e+30"},
   };
   for (const auto& c : cases) {
     INFO(c.object);
     CHECK_THAT(errorOf(std::string(R"({"objects": [)") + c.object + "]}"), Catch::Contains(c.message));
+  }
+  // The bounds themselves are accepted: sizes of 1e15 and of 1e-15, and a
+  // coefficient just above float's smallest normal once scaled.
+  for (const char* object : {R"({"type": "cylinder", "radius": 1e15, "height": 1e15})",
+                             R"({"type": "ellipsoid", "radii": [1e15, 1e15, 1e15]})",
+                             R"({"type": "cylinder", "radius": 1e-15, "height": 1e-15})",
+                             R"({"type": "quadric", "coefficients": [1, 1.2e-38, 1, 0, 0, 0, 0, 0, 0, -1], "clip": {"min": [-1, -1, -1], "max": [1, 1, 1]}})"}) {
+    INFO(object);
+    CHECK(errorOf(std::string(R"({"objects": [)") + object + "]}") == "");
   }
 }
 

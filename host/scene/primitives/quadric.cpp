@@ -13,6 +13,7 @@
 // The solid is {Q <= 0}: inside the cylinder, cone, paraboloid, ellipsoid, the
 // one-sheet hyperboloid's waist and the two-sheet one's bowls.
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "scene/primitives/primitive_kind.h"
@@ -24,11 +25,13 @@ namespace {
 constexpr int kCoefficients = 10;
 
 using Check = JsonReader::Check;
-const Check kPositive = [](double x) { return x > 0; };
+// A preset's sizes are lengths: they bound its clip box, which must lie within 1e15.
+const Check kLength = [](double x) { return x > 0 && x <= kMaxCoordinate; };
+constexpr const char* kLengthWanted = "a positive number of at most 1e15";
 
-double positive(const JsonReader& r, const Json& v, const std::string& path, const char* key, double fallback) {
+double length(const JsonReader& r, const Json& v, const std::string& path, const char* key, double fallback) {
   const Json* p = JsonReader::find(v, key);
-  return p ? r.number(*p, member(path, key), "a positive number", kPositive) : fallback;
+  return p ? r.number(*p, member(path, key), kLengthWanted, kLength) : fallback;
 }
 
 bool flag(const JsonReader& r, const Json& v, const std::string& path, const char* key, bool fallback) {
@@ -58,35 +61,46 @@ void parseGeneral(const JsonReader& r, const Json& v, const std::string& path, O
   o.capped = flag(r, v, path, "capped", false);
 }
 
+std::string problem(const Object& o);
+
+// A preset's sizes are each within bounds, but together they may make
+// coefficients float cannot keep: say so in the preset's own terms.
+void checkPreset(const JsonReader& r, const std::string& path, const Object& o, const std::string& sizes) {
+  if (const std::string p = problem(o); !p.empty()) r.fail(path, "the sizes " + sizes + " make a quadric prism cannot hold: " + p);
+}
+
 void parse(const JsonReader& r, const Json& v, const std::string& path, const std::string& name, Object& o) {
   if (name == "quadric") return parseGeneral(r, v, path, o);
   o.capped = flag(r, v, path, "capped", true);
   if (name == "ellipsoid") {
     r.checkObject(v, path, objectKeys({"radii", "capped"}));
-    const Vec3 a = r.vec3(r.require(v, path, "radii"), member(path, "radii"), "a positive number", kPositive);
+    const Vec3 a = r.vec3(r.require(v, path, "radii"), member(path, "radii"), kLengthWanted, kLength);
     setQuadric(o, {1 / (a.x * a.x), 1 / (a.y * a.y), 1 / (a.z * a.z), 0, 0, 0, 0, 0, 0, -1}, a * -1.0, a);
-    return;
+    return checkPreset(r, path, o, "radii " + formatVec(a));
   }
   if (name == "hyperboloid") {
     r.checkObject(v, path, objectKeys({"sheets", "radius", "vertex", "top_radius", "height", "capped"}));
     const Json* s = JsonReader::find(v, "sheets");
     const long long sheets = s ? r.integer(*s, member(path, "sheets"), 1, 2) : 1;
-    const double h = positive(r, v, path, "height", 1), top = positive(r, v, path, "top_radius", 2);
+    const double h = length(r, v, path, "height", 1), top = length(r, v, path, "top_radius", 2);
     const Vec3 lo{-top, -h, -top}, hi{top, h, top};
     if (sheets == 1) {
-      const double a = positive(r, v, path, "radius", 1);
+      const double a = length(r, v, path, "radius", 1);
       if (!(top > a)) r.fail(member(path, "top_radius"), "expected more than radius (" + formatNumber(a) + ")");
       setQuadric(o, {1, -(top * top - a * a) / (h * h), 1, 0, 0, 0, 0, 0, 0, -a * a}, lo, hi);
+      return checkPreset(r, path, o,
+                         "radius " + formatNumber(a) + ", top_radius " + formatNumber(top) + ", height " + formatNumber(h));
     } else {
-      const double tip = positive(r, v, path, "vertex", 0.5);
+      const double tip = length(r, v, path, "vertex", 0.5);
       if (!(h > tip)) r.fail(member(path, "height"), "expected more than vertex (" + formatNumber(tip) + ")");
       const double s2 = top * top / (h * h / (tip * tip) - 1);  // squared radius scale of the sheets
       setQuadric(o, {1, -s2 / (tip * tip), 1, 0, 0, 0, 0, 0, 0, s2}, lo, hi);
+      return checkPreset(r, path, o,
+                         "vertex " + formatNumber(tip) + ", top_radius " + formatNumber(top) + ", height " + formatNumber(h));
     }
-    return;
   }
   r.checkObject(v, path, objectKeys({"radius", "height", "capped"}));
-  const double rad = positive(r, v, path, "radius", 1), h = positive(r, v, path, "height", 1);
+  const double rad = length(r, v, path, "radius", 1), h = length(r, v, path, "height", 1);
   const Vec3 lo{-rad, 0, -rad}, hi{rad, h, rad};
   if (name == "cylinder") {
     setQuadric(o, {1, 0, 1, 0, 0, 0, 0, 0, 0, -rad * rad}, lo, hi);
@@ -96,6 +110,21 @@ void parse(const JsonReader& r, const Json& v, const std::string& path, const st
   } else {  // paraboloid
     setQuadric(o, {1, 0, 1, 0, 0, 0, 0, -rad * rad / h, 0, 0}, lo, hi);
   }
+  checkPreset(r, path, o, "radius " + formatNumber(rad) + ", height " + formatNumber(h));
+}
+
+// The kernel holds the coefficients scaled to a largest magnitude of 1
+// (flatten, below): a non-zero one that falls below float's smallest normal
+// there would silently leave the surface.
+std::string coefficientRangeProblem(const std::vector<double>& q) {
+  double largest = 0;
+  for (int i = 0; i < kCoefficients; ++i) largest = std::max(largest, std::fabs(q[i]));
+  for (int i = 0; i < kCoefficients; ++i)
+    if (q[i] != 0 && std::fabs(q[i]) / largest < FLT_MIN)
+      return "coefficients span more than float holds: " + formatNumber(q[i]) + " beside " + formatNumber(largest) +
+             " (the kernel keeps them scaled to a largest magnitude of 1, and " + formatNumber(q[i] / largest) +
+             " is below float's smallest normal number)";
+  return "";
 }
 
 Vec3 clipMin(const Object& o) { return {o.params[10], o.params[11], o.params[12]}; }
@@ -109,6 +138,7 @@ std::string problem(const Object& o) {
     surface = surface || (i < 9 && o.params[i] != 0);
   }
   if (!surface) return "coefficients: one of the first nine must be non-zero (with A..I all 0 there is no surface)";
+  if (const std::string p = coefficientRangeProblem(o.params); !p.empty()) return p;
   std::string p = vectorProblem(clipMin(o), "clip.min");
   return p.empty() ? vectorProblem(clipMax(o), "clip.max") : p;
 }
