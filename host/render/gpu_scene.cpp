@@ -365,6 +365,11 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
   g.triangles = std::move(block.triangles);
   g.mesh_data = std::move(block.positions);
   g.mesh_data.insert(g.mesh_data.end(), block.extras.begin(), block.extras.end());
+  // The readers refuse images past the limit before reading them; this
+  // guards scenes assembled in code.
+  if (const std::size_t held = imageTexelsHeld(scene); held > kMaxTextureTexels)
+    throw std::invalid_argument("textures: the scene's images hold " + std::to_string(held) + " texels together, more than " +
+                                std::to_string(kMaxTextureTexels));
   std::map<const ImageTexture*, int> image_offsets;  // each image's texels once, however many materials use it
   for (const Material& m : scene.materials) {
     MaterialGpu mg = flattenMaterial(m);
@@ -372,9 +377,6 @@ GpuScene flattenScene(const Scene& scene, const RenderOptions& options) {
       auto [it, fresh] = image_offsets.emplace(image, static_cast<int>(g.texels.size() / 4));
       if (fresh) {
         const std::size_t texels = static_cast<std::size_t>(image->width) * image->height;
-        if (g.texels.size() / 4 + texels > kMaxTextureTexels)
-          throw std::invalid_argument("textures: the scene's images hold more than " +
-                                      std::to_string(kMaxTextureTexels) + " texels together (at '" + image->file + "')");
         for (std::size_t t = 0; t < texels; ++t)
           g.texels.insert(g.texels.end(), {image->rgb[3 * t], image->rgb[3 * t + 1], image->rgb[3 * t + 2], 1.0f});
       }

@@ -31,10 +31,14 @@ struct ImageTextureError : std::runtime_error {
 // [0, 1] to linear light.
 double srgbToLinear(double encoded);
 
-// Reads a regular file's first subimage (grey, RGB or RGBA; more channels
-// keep the first three). `srgb`: decode from sRGB; empty: as the file says
-// (its colour space), else sRGB for integer pixels and linear for floats.
-// Throws ImageTextureError naming the file and what is wrong.
-SharedImage readImageTexture(const std::string& path, std::optional<bool> srgb);
+// Reads a regular file's first subimage: grey or RGB, with or without alpha
+// (more colour channels keep the first three). Alpha is left out, and the
+// colour is the file's own, not multiplied by alpha. `srgb`: decode from sRGB;
+// empty: as the file says (its colour space), else sRGB for integer pixels and
+// linear for floats. `texels_held`: the texels of the scene's images read
+// before it; the image is refused, before its pixels are read, when it would
+// take them past kMaxTextureTexels. Throws ImageTextureError naming the file
+// and what is wrong.
+SharedImage readImageTexture(const std::string& path, std::optional<bool> srgb, std::size_t texels_held);
 
 }  // namespace prism

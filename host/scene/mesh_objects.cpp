@@ -26,7 +26,7 @@ void attachDiffuseMaps(Scene& scene, std::size_t first, const std::string& sourc
     if (it == read.end()) {
       SharedImage image;
       try {
-        image = readImageTexture(m.diffuse_map, std::nullopt);
+        image = readImageTexture(m.diffuse_map, std::nullopt, imageTexelsHeld(scene));
       } catch (const ImageTextureError& e) {
         scene.warnings.push_back(source + ": material '" + m.name + "': map_Kd not used: " + e.what());
       }

@@ -1,5 +1,8 @@
-// The scene model's one piece of behaviour: the material that objects fall back to.
+// The scene model's two pieces of behaviour: the material that objects fall
+// back to, and the texels its images hold together.
 #include "scene/scene.h"
+
+#include <set>
 
 namespace prism {
 
@@ -11,6 +14,16 @@ Material defaultMaterial() {
   m.diffuse = Vec3::splat(0.8);
   m.specular = Vec3::splat(0);
   return m;
+}
+
+std::size_t imageTexelsHeld(const Scene& scene) {
+  std::set<const ImageTexture*> counted;
+  std::size_t texels = 0;
+  for (const Material& m : scene.materials) {
+    const ImageTexture* image = m.texture.kind == Texture::Kind::Image ? m.texture.image.get() : nullptr;
+    if (image && counted.insert(image).second) texels += static_cast<std::size_t>(image->width) * image->height;
+  }
+  return texels;
 }
 
 }  // namespace prism

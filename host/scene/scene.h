@@ -160,4 +160,8 @@ struct Scene {
 // The material objects use when they name none.
 Material defaultMaterial();
 
+// The texels of the images the scene's materials hold, each image once
+// (as the flattening stores them): what kMaxTextureTexels bounds.
+std::size_t imageTexelsHeld(const Scene& scene);
+
 }  // namespace prism

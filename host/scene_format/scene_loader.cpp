@@ -342,7 +342,7 @@ class SceneParser : private JsonReader {
         srgb = p->get<bool>();
       }
       try {
-        t.image = readImageTexture(file, srgb);
+        t.image = readImageTexture(file, srgb, imageTexelsHeld(m_scene));
       } catch (const ImageTextureError& e) {
         fail(file_at, e.what());
       }
@@ -362,7 +362,9 @@ class SceneParser : private JsonReader {
       fail(member(path, "type"), "unknown texture type '" + type + "' (expected checker, image)");
     }
     if (const Json* p = find(v, "scale"))
-      t.scale = number(*p, member(path, "scale"), "a positive number", [](double x) { return x > 0; });
+      // It divides coordinates of up to 1e15 in float (kernels/shading/texture.h).
+      t.scale = number(*p, member(path, "scale"), "a number in [1e-15, 1e15]",
+                       [](double x) { return x >= 1e-15 && x <= kMaxCoordinate; });
     return t;
   }
 

@@ -85,13 +85,13 @@ TEST_CASE("sRGB decoding follows IEC 61966-2-1", "[render][texture]") {
 TEST_CASE("an 8-bit PNG reads as its sRGB values decoded, a float EXR as linear", "[render][texture]") {
   std::vector<std::uint8_t> bytes;
   const std::string png = writePng(&bytes);
-  const SharedImage img = readImageTexture(png, std::nullopt);
+  const SharedImage img = readImageTexture(png, std::nullopt, 0);
   REQUIRE(img->width == kW);
   REQUIRE(img->height == kH);
   CHECK(img->srgb);
   for (std::size_t k = 0; k < bytes.size(); ++k) CHECK(img->rgb[k] == Approx(srgbToLinear(bytes[k] / 255.0)).margin(1e-6));
   // Told it is linear, the same file keeps its values.
-  const SharedImage raw = readImageTexture(png, false);
+  const SharedImage raw = readImageTexture(png, false, 0);
   for (std::size_t k = 0; k < bytes.size(); ++k) CHECK(raw->rgb[k] == Approx(bytes[k] / 255.0).margin(1e-6));
   const std::string exr = tempDir() + "/tex.exr";
   std::vector<float> values(kW * kH * 3);
@@ -101,7 +101,7 @@ TEST_CASE("an 8-bit PNG reads as its sRGB values decoded, a float EXR as linear"
   REQUIRE(out->open(exr, OIIO::ImageSpec(kW, kH, 3, OIIO::TypeDesc::FLOAT)));
   REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, values.data()));
   out->close();
-  const SharedImage e = readImageTexture(exr, std::nullopt);
+  const SharedImage e = readImageTexture(exr, std::nullopt, 0);
   CHECK_FALSE(e->srgb);
   for (std::size_t k = 0; k < values.size(); ++k) CHECK(e->rgb[k] == Approx(values[k]).margin(1e-6));
 }
@@ -258,4 +258,108 @@ TEST_CASE("image textures that cannot be read are refused with the reason", "[re
   CHECK_THAT(errorOf(material(R"({"type": "image", "file": ")" + png + R"(", "wrap": "tile"})")),
              Catch::Contains("unknown wrap mode 'tile' (expected repeat, clamp, mirror)"));
   CHECK_THAT(errorOf(material(R"({"type": "photo"})")), Catch::Contains("expected checker, image"));
+  // The scale divides coordinates in float: 1e-50 would be 0 there.
+  for (const char* scale : {"1e-50", "0", "2e15"})
+    CHECK_THAT(errorOf(material(R"({"type": "checker", "scale": )" + std::string(scale) + "}")),
+               Catch::Contains("materials.m.texture.scale: expected a number in [1e-15, 1e15]"));
+  for (const char* scale : {"1e-15", "1e15"}) CHECK(errorOf(material(R"({"type": "checker", "scale": )" + std::string(scale) + "}")) == "");
+  // A file that ends before its pixels do.
+  const std::string cut = tempDir() + "/cut.pgm";
+  std::ofstream(cut) << "P5\n4 4\n255\nAB";
+  const std::string cut_error = errorOf(material(R"({"type": "image", "file": ")" + cut + R"("})"));
+  CHECK_THAT(cut_error, Catch::Contains("cut.pgm: cannot read its pixels: "));
+  CHECK_THAT(cut_error, !Catch::EndsWith(": "));  // a reason follows, OpenImageIO's or prism's
+  // Two colour channels and no alpha: neither grey nor RGB.
+  const std::string uv = tempDir() + "/uv.exr";
+  OIIO::ImageSpec spec(2, 2, 2, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"U", "V"};
+  spec.alpha_channel = -1;
+  const std::vector<float> values(8, 0.5f);
+  auto out = OIIO::ImageOutput::create(uv);
+  REQUIRE(out);
+  REQUIRE(out->open(uv, spec));
+  REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, values.data()));
+  out->close();
+  CHECK_THAT(errorOf(material(R"({"type": "image", "file": ")" + uv + R"("})")),
+             Catch::Contains("uv.exr: 2 colour channels (U, V); expected grey or RGB, with or without alpha"));
+}
+
+TEST_CASE("an image's alpha is left out: grey and alpha reads as grey, RGBA as the colour the file stores",
+          "[render][texture]") {
+  // Alpha runs 0, 85, 170, 255 across the texels and colour stays put: the
+  // file keeps them apart (PNG), and the texels must not darken with alpha.
+  for (const int channels : {2, 4}) {
+    INFO(channels << " channels");
+    std::vector<std::uint8_t> bytes(4 * channels);
+    for (int t = 0; t < 4; ++t) {
+      for (int c = 0; c + 1 < channels; ++c) bytes[t * channels + c] = static_cast<std::uint8_t>(40 + 50 * c + 30 * t);
+      bytes[t * channels + channels - 1] = static_cast<std::uint8_t>(85 * t);
+    }
+    const std::string png = tempDir() + "/alpha" + std::to_string(channels) + ".png";
+    OIIO::ImageSpec spec(2, 2, channels, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:UnassociatedAlpha", 1);  // write the bytes as they are
+    auto out = OIIO::ImageOutput::create(png);
+    REQUIRE(out);
+    REQUIRE(out->open(png, spec));
+    REQUIRE(out->write_image(OIIO::TypeDesc::UINT8, bytes.data()));
+    out->close();
+    const SharedImage img = readImageTexture(png, std::nullopt, 0);
+    for (int t = 0; t < 4; ++t)
+      for (int c = 0; c < 3; ++c) {
+        const int stored = bytes[t * channels + (channels == 2 ? 0 : c)];
+        CHECK(img->rgb[3 * t + c] == Approx(srgbToLinear(stored / 255.0)).margin(1e-6));
+      }
+  }
+}
+
+TEST_CASE("the scene's images together hold at most 2^26 texels, refused before their pixels are read",
+          "[render][texture]") {
+  // A header of 8192 x 8192 (2^26 texels: within the limit alone) with no
+  // pixels behind it: refused for the total, its pixels are never read;
+  // read, it would fail for want of them.
+  const std::string dir = tempDir();
+  std::ofstream(dir + "/big.pgm") << "P5\n8192 8192\n255\n";
+  std::ofstream(dir + "/one.pgm") << "P5\n1 1\n255\nA";
+  auto scene = [&](const std::string& materials) {
+    return R"({"materials": {)" + materials + "}}";
+  };
+  const std::string one = R"("a": {"texture": {"type": "image", "file": ")" + dir + R"(/one.pgm"}})";
+  const std::string big = R"("b": {"texture": {"type": "image", "file": ")" + dir + R"(/big.pgm"}})";
+  CHECK_THAT(errorOf(scene(big)), Catch::Contains("big.pgm: cannot read its pixels"));
+  CHECK_THAT(errorOf(scene(one + ", " + big)),
+             Catch::Contains("materials.b.texture.file: " + dir +
+                             "/big.pgm: 8192 x 8192 texels, which with the 1 texels of the scene's images before it pass "
+                             "the 67108864 texels textures may hold together"));
+  // The same through a mesh's map_Kd: a warning, and the material stays plain.
+  {
+    std::ofstream mtl(dir + "/big.mtl");
+    mtl << "newmtl small\nmap_Kd one.pgm\nnewmtl large\nmap_Kd big.pgm\n";
+    std::ofstream obj(dir + "/big.obj");
+    obj << "mtllib big.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl small\nf 1 2 3\nusemtl large\nf 3 2 1\n";
+  }
+  const Scene mesh = parseScene(R"({"objects": [{"type": "mesh", "file": ")" + dir + R"(/big.obj"}]})", "big");
+  std::string warnings;
+  for (const std::string& w : mesh.warnings) warnings += w + "\n";
+  CHECK_THAT(warnings, Catch::Contains("material 'large': map_Kd not used: ") &&
+                           Catch::Contains("big.pgm: 8192 x 8192 texels, which with the 1 texels"));
+  REQUIRE(mesh.materials.size() >= 2);
+  CHECK(mesh.materials[mesh.materials.size() - 2].texture.kind == Texture::Kind::Image);
+  CHECK(mesh.materials.back().texture.kind == Texture::Kind::None);
+}
+
+TEST_CASE("an image shared by several materials counts once toward the texel limit", "[render][texture]") {
+  std::vector<std::uint8_t> bytes;
+  const std::string png = writePng(&bytes);
+  const Scene scene = parseScene(R"({"materials": {
+      "a": {"texture": {"type": "image", "file": ")" + png + R"("}},
+      "b": {"texture": {"type": "checker"}},
+      "c": {"texture": {"type": "image", "file": ")" + png + R"("}}}})", "shared");
+  // The loader reads the file once for each material that names it: two images.
+  CHECK(imageTexelsHeld(scene) == 2 * kW * kH);
+  Scene shared = scene;
+  shared.materials[3].texture.image = shared.materials[1].texture.image;  // one image, two materials
+  CHECK(imageTexelsHeld(shared) == kW * kH);
+  // The flattening stores it once too.
+  RenderOptions options = RenderOptions::fromScene(shared);
+  CHECK(flattenScene(shared, options).texels.size() == 4 * kW * kH);
 }
