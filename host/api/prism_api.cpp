@@ -67,11 +67,13 @@ static_assert(PRISM_FILTER_BOX == static_cast<int>(FilterKind::Box) &&
               "PrismFilter is FilterKind");
 
 RenderOptions fromC(const PrismRenderOptions& o) {
+  // Checked before they narrow to int, so that a refusal names the value given.
+  validateCounts(o.width, o.height, o.spp, o.max_depth, o.aa_max_level);
   RenderOptions r;
-  r.width = static_cast<int>(std::min<uint32_t>(o.width, std::numeric_limits<int>::max()));
-  r.height = static_cast<int>(std::min<uint32_t>(o.height, std::numeric_limits<int>::max()));
-  r.spp = static_cast<int>(std::min<uint32_t>(o.spp, std::numeric_limits<int>::max()));
-  r.max_depth = static_cast<int>(std::min<uint32_t>(o.max_depth, std::numeric_limits<int>::max()));
+  r.width = static_cast<int>(o.width);
+  r.height = static_cast<int>(o.height);
+  r.spp = static_cast<int>(o.spp);
+  r.max_depth = static_cast<int>(o.max_depth);
   r.min_weight = o.min_weight;
   r.seed = o.seed;
   const char* accel = accelNameOf(o.accel);
@@ -97,7 +99,7 @@ RenderOptions fromC(const PrismRenderOptions& o) {
   if (!bounds || !tryParseBoundsKind(bounds, &r.bounds))
     throw std::invalid_argument("render options: unknown bounds value " + std::to_string(o.bounds));
   r.aa_threshold = o.aa_threshold;
-  r.aa_max_level = static_cast<int>(std::min<uint32_t>(o.aa_max_level, std::numeric_limits<int>::max()));
+  r.aa_max_level = static_cast<int>(o.aa_max_level);
   r.profile = o.profile != 0;
   r.check_nan = o.check_nan != 0;
   return r;

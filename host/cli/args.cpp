@@ -83,13 +83,15 @@ std::optional<uint64_t> ParsedArgs::uint64(const std::string& name) const {
   return parseUnsigned(name, *value, 0, std::numeric_limits<uint64_t>::max());
 }
 
+// The float readers take strtof's rounding as the number meant: an underflow
+// (1e-50) is zero or a subnormal, not an error; an overflow is infinite and
+// refused.
 std::optional<float> ParsedArgs::nonNegativeFloat(const std::string& name) const {
   const auto value = text(name);
   if (!value) return std::nullopt;
-  errno = 0;
   char* end = nullptr;
   const float number = std::strtof(value->c_str(), &end);
-  if (value->empty() || *end != '\0' || errno == ERANGE || !std::isfinite(number) || number < 0.0f) {
+  if (value->empty() || *end != '\0' || !std::isfinite(number) || number < 0.0f) {
     throw UsageError(name + ": expected a non-negative number, got '" + *value + "'");
   }
   return number;
@@ -101,11 +103,10 @@ std::optional<std::array<float, 3>> ParsedArgs::triple(const std::string& name) 
   std::array<float, 3> out{};
   const char* p = value->c_str();
   for (int k = 0; k < 3; ++k) {
-    errno = 0;
     char* end = nullptr;
     out[k] = std::strtof(p, &end);
     const char expected_end = k < 2 ? ',' : '\0';
-    if (end == p || *end != expected_end || errno == ERANGE || !std::isfinite(out[k]))
+    if (end == p || *end != expected_end || !std::isfinite(out[k]))
       throw UsageError(name + ": expected three numbers X,Y,Z, got '" + *value + "'");
     p = end + 1;
   }
@@ -115,10 +116,9 @@ std::optional<std::array<float, 3>> ParsedArgs::triple(const std::string& name) 
 std::optional<float> ParsedArgs::floatBetween(const std::string& name, float low, float high) const {
   const auto value = text(name);
   if (!value) return std::nullopt;
-  errno = 0;
   char* end = nullptr;
   const float number = std::strtof(value->c_str(), &end);
-  if (value->empty() || *end != '\0' || errno == ERANGE || !(number > low && number < high)) {
+  if (value->empty() || *end != '\0' || !(number > low && number < high)) {
     throw UsageError(name + ": expected a number between " + std::to_string(static_cast<int>(low)) + " and " +
                      std::to_string(static_cast<int>(high)) + ", got '" + *value + "'");
   }

@@ -53,13 +53,21 @@ SamplingOptions RenderOptions::sampling() const {
   return s;
 }
 
-void RenderOptions::validate() const {
+void validateCounts(long long width, long long height, long long spp, long long max_depth, long long aa_max_level) {
   auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
   if (width < 1 || width > 32768) fail("width must be in 1..32768, got " + std::to_string(width));
   if (height < 1 || height > 32768) fail("height must be in 1..32768, got " + std::to_string(height));
-  if (static_cast<long long>(width) * height > (1ll << 28)) fail("width x height must be at most 2^28 pixels");
+  if (width * height > (1ll << 28)) fail("width x height must be at most 2^28 pixels");
   if (spp < 1 || spp > 65536) fail("spp must be in 1..65536, got " + std::to_string(spp));
   if (max_depth < 0 || max_depth > 31) fail("max_depth must be in 0..31, got " + std::to_string(max_depth));
+  if (aa_max_level < 0 || aa_max_level > kMaxAdaptiveLevel)
+    fail("the adaptive maximum level must be in 0.." + std::to_string(kMaxAdaptiveLevel) + ", got " +
+         std::to_string(aa_max_level));
+}
+
+void RenderOptions::validate() const {
+  auto fail = [](const std::string& what) { throw std::invalid_argument(what); };
+  validateCounts(width, height, spp, max_depth, aa_max_level);
   if (!(min_weight >= 0 && min_weight <= 1)) fail("min_weight must be in [0, 1], got " + std::to_string(min_weight));
   if (static_cast<int>(filter) < 0 || static_cast<int>(filter) > static_cast<int>(FilterKind::Mitchell))
     fail("unknown filter value " + std::to_string(static_cast<int>(filter)));
@@ -67,9 +75,6 @@ void RenderOptions::validate() const {
   // a bad value is a mistake whatever the mode.
   if (!(aa_threshold >= 0) || !std::isfinite(aa_threshold))
     fail("the adaptive threshold must be a finite number >= 0, got " + std::to_string(aa_threshold));
-  if (aa_max_level < 0 || aa_max_level > kMaxAdaptiveLevel)
-    fail("the adaptive maximum level must be in 0.." + std::to_string(kMaxAdaptiveLevel) + ", got " +
-         std::to_string(aa_max_level));
   sampling().validate();
 }
 

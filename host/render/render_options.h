@@ -61,4 +61,10 @@ struct RenderOptions {
   void validate() const;
 };
 
+// The ranges of RenderOptions' counts (width, height, spp, max_depth,
+// aa_max_level), checked on values as wide as their source holds them (the C
+// API's are uint32, wider than int), so that a refusal shows the number given.
+// RenderOptions::validate checks its own through it.
+void validateCounts(long long width, long long height, long long spp, long long max_depth, long long aa_max_level);
+
 }  // namespace prism

@@ -341,7 +341,15 @@ int main(int argc, char** argv) {
   small.accel = PRISM_ACCEL_AUTO;
   small.width = 0;
   BAD(prismRender(ctx, scene, &small, rgba, NULL), "prismRender");
+  /* Counts past int are refused naming the value given, not one clamped to int. */
+  small.width = 4294967295u;
+  BAD(prismCheckRenderOptions(&small), "prismCheckRenderOptions");
+  CHECK(strstr(prismGetLastError(), "width must be in 1..32768, got 4294967295") != NULL);
   small.width = 8;
+  small.aa_max_level = 2147483648u;
+  BAD(prismRender(ctx, scene, &small, rgba, NULL), "prismRender");
+  CHECK(strstr(prismGetLastError(), "got 2147483648") != NULL);
+  small.aa_max_level = opts.aa_max_level;
   small.min_weight = NAN;
   BAD(prismRender(ctx, scene, &small, rgba, NULL), "prismRender");
   small.min_weight = opts.min_weight;

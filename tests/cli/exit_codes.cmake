@@ -56,4 +56,13 @@ expect(1 "unknown mesh file extension '.json'" info "${scene}")
 expect(0 "" info "${mesh}")
 expect(0 "" plugins)
 expect(0 "" render "${scene}" -o "${WORK_DIR}/x.png" --width 8 --height 6 --quiet)
+# A number too small for float is the float it rounds to, not a mistake:
+# --min-weight 1e-50 renders the very image of --min-weight 0.
+expect(0 "" render "${scene}" -o "${WORK_DIR}/tiny.pfm" --width 8 --height 6 --quiet --min-weight 1e-50)
+expect(0 "" render "${scene}" -o "${WORK_DIR}/zero.pfm" --width 8 --height 6 --quiet --min-weight 0)
+file(SHA256 "${WORK_DIR}/tiny.pfm" tiny)
+file(SHA256 "${WORK_DIR}/zero.pfm" zero)
+if(NOT tiny STREQUAL zero)
+  message(FATAL_ERROR "--min-weight 1e-50 and --min-weight 0 rendered different images")
+endif()
 message(STATUS "exit codes: ${checked} cases as docs/cli.md says")

@@ -44,6 +44,14 @@ expect_usage_error("spp must be 1" render "${scene}" -o "${out}" --aa quincunx -
 # Ranges are the library's, named after the flag; the scene need not be read for them.
 expect_usage_error("--max-depth: max_depth must be in 0..31, got 32" render "${WORK_DIR}/none.json" -o "${out}" --max-depth 32)
 expect_usage_error("--width: width must be in 1..32768, got 0" render "${WORK_DIR}/none.json" -o "${out}" --width 0)
+# Past int, but within the flag's uint32: the value given, not one clamped on the way.
+expect_usage_error("--width: width must be in 1..32768, got 4294967295" render "${WORK_DIR}/none.json" -o "${out}"
+                   --width 4294967295)
+expect_usage_error("--spp: spp must be in 1..65536, got 2147483648" render "${WORK_DIR}/none.json" -o "${out}"
+                   --spp 2147483648)
+# A float's overflow is refused (its underflow is the number meant: exit_codes.cmake).
+expect_usage_error("--camera-pos: expected three numbers" render "${scene}" -o "${out}" --camera-pos 1e39,0,0)
+expect_usage_error("--min-weight" render "${scene}" -o "${out}" --min-weight 1e39)
 expect_usage_error("--min-weight" render "${scene}" -o "${out}" --min-weight 2)
 expect_usage_error("--spp, --aa: aa grid needs a square spp" render "${scene}" -o "${out}" --aa grid --spp 5)
 expect_usage_error("--aa-max-level" render "${scene}" -o "${out}" --aa-max-level 9)
