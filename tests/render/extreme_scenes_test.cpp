@@ -8,6 +8,7 @@
 // under a light of 1e24.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -31,6 +32,21 @@ std::string scene(const std::string& objects, const std::string& materials = "",
          (render.empty() ? R"({"max_depth": 6, "min_weight": 0})" : render) + R"(, "materials": {)" + m +
          R"(}, "lights": [)" + (lights.empty() ? R"({"position": [2, 4, 5], "intensity": 1e24})" : lights) +
          R"(], "objects": [)" + objects + "]}";
+}
+
+// The pixels of r that are not finite, counted here.
+std::size_t notFinitePixels(const RenderResult& r) {
+  std::size_t n = 0;
+  for (std::size_t p = 0; 4 * p < r.rgba.size(); ++p)
+    n += !std::all_of(&r.rgba[4 * p], &r.rgba[4 * p + 4], [](float x) { return std::isfinite(x); });
+  return n;
+}
+
+// The render's warning about pixels that are not finite, or "" if none.
+std::string notFiniteWarning(const RenderResult& r) {
+  for (const std::string& w : r.stats.warnings)
+    if (w.find("not finite") != std::string::npos) return w;
+  return "";
 }
 
 std::string sphere(const std::string& center, const std::string& radius, const char* material = "glass") {
@@ -72,6 +88,7 @@ TEST_CASE("scenes at the edges of the format render to finite pixels", "[render]
     for (float x : r.normal) bad += !std::isfinite(x);
     for (float x : r.albedo) bad += !std::isfinite(x);
     CHECK(bad == 0);
+    CHECK(notFiniteWarning(r) == "");
     std::size_t hits = 0;
     for (std::int32_t id : r.primid) hits += id >= 0;
     CHECK(hits > 0);  // the camera sees something in every case
@@ -94,6 +111,7 @@ TEST_CASE("check_nan names the first sample whose light is not finite, and the r
   options.check_nan = true;
   const RenderResult clean = test::sharedRenderer().render(s, options);
   CHECK_FALSE(clean.stats.nan.has_value());
+  CHECK(notFiniteWarning(clean) == "");
 
   s.lights[0].intensity = std::nan("");
   const RenderResult r = test::sharedRenderer().render(s, options);
@@ -120,4 +138,28 @@ TEST_CASE("check_nan names the first sample whose light is not finite, and the r
   CHECK(std::abs(std::sqrt(hx * hx + hy * hy + hz * hz) - 1.0) < 1e-5);
   const bool value_finite = std::isfinite(f.value[0]) && std::isfinite(f.value[1]) && std::isfinite(f.value[2]);
   CHECK_FALSE(value_finite);
+  // Without check_nan too, the render warns, counting the pixels the image holds.
+  options.check_nan = false;
+  const RenderResult plain = test::sharedRenderer().render(s, options);
+  CHECK_THAT(notFiniteWarning(plain), Catch::StartsWith(std::to_string(notFinitePixels(plain)) + " of the image's " +
+                                                        std::to_string(plain.width * plain.height) + " pixels are not finite"));
+  CHECK(notFinitePixels(plain) > 0);
+}
+
+// Every value within its own bound, but together past float: a diffuse colour
+// of 1e6 on a checker of 1e6 under a light of 1e30 gives 1e42 at every lit
+// point. The image is not silently handed back: the render warns, with the
+// count of pixels that are not finite.
+TEST_CASE("a render whose bright values together pass float's range warns with the count of such pixels",
+          "[render][reliability]") {
+  const Scene s = parseScene(
+      scene(sphere("[0, 0, 0]", "1", "hot"),
+            R"("hot": {"diffuse": 1e6, "texture": {"type": "checker", "color1": 1e6, "color2": 1e6}})",
+            R"({"position": [0, 1, 6], "intensity": 1e30})", "", R"({"max_depth": 0})"),
+      "bright.json");
+  const RenderResult r = test::sharedRenderer().render(s, RenderOptions::fromScene(s));
+  const std::size_t bad = notFinitePixels(r);
+  CHECK(bad > 0);
+  CHECK_THAT(notFiniteWarning(r), Catch::StartsWith(std::to_string(bad) + " of the image's " +
+                                                    std::to_string(r.width * r.height) + " pixels are not finite"));
 }
