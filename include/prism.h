@@ -314,7 +314,7 @@ typedef struct PrismMaterial {
   float translucency; /* the same for refracted rays; 0: clear */
   int checker;        /* nonzero: a checker texture multiplies ambient and diffuse */
   float checker_color1[3], checker_color2[3];
-  float checker_scale; /* size of one square in surface units, > 0 */
+  float checker_scale; /* size of one square in surface units, in [1e-15, 1e15] */
   float roughness;      /* Cook-Torrance: Beckmann's m or GGX's alpha, 0.001..1 */
   uint32_t distribution; /* Cook-Torrance: a PrismMicrofacet */
 } PrismMaterial;

@@ -186,7 +186,7 @@ RenderRequest parseRenderArgs(const std::vector<std::string>& args) {
   request.aperture = parsed.nonNegativeFloat("--aperture");
   request.focus_distance = parsed.nonNegativeFloat("--focus-distance");
   if (request.focus_distance && !(*request.focus_distance > 0))
-    throw UsageError("--focus-distance: expected a positive distance, got 0");
+    throw UsageError("--focus-distance: expected a positive distance, got '" + *parsed.text("--focus-distance") + "'");
   checkOutput(request);
   return request;
 }

@@ -19,6 +19,7 @@ namespace {
 // and its material keeps its plain colour.
 void attachDiffuseMaps(Scene& scene, std::size_t first, const std::string& source) {
   std::map<std::string, SharedImage> read;
+  std::size_t texels_held = imageTexelsHeld(scene);
   for (std::size_t i = first; i < scene.materials.size(); ++i) {
     Material& m = scene.materials[i];
     if (m.diffuse_map.empty() || m.texture.kind != Texture::Kind::None) continue;
@@ -26,7 +27,8 @@ void attachDiffuseMaps(Scene& scene, std::size_t first, const std::string& sourc
     if (it == read.end()) {
       SharedImage image;
       try {
-        image = readImageTexture(m.diffuse_map, std::nullopt, imageTexelsHeld(scene));
+        image = readImageTexture(m.diffuse_map, std::nullopt, texels_held);
+        texels_held += static_cast<std::size_t>(image->width) * image->height;
       } catch (const ImageTextureError& e) {
         scene.warnings.push_back(source + ": material '" + m.name + "': map_Kd not used: " + e.what());
       }

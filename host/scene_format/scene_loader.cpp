@@ -54,7 +54,9 @@ constexpr double kMaxExponent = 1e6;   // shininess: pow_positive is checked up 
 class SceneParser : private JsonReader {
  public:
   SceneParser(std::string name, std::string base_dir, Scene& scene)
-      : JsonReader(std::move(name), &scene.warnings, std::move(base_dir)), m_scene(scene) {}
+      : JsonReader(std::move(name), &scene.warnings, std::move(base_dir)),
+        m_scene(scene),
+        m_texels_held(imageTexelsHeld(scene)) {}
 
   void parse(const ParsedJson& parsed) {
     const Json& root = parsed.root;
@@ -342,10 +344,11 @@ class SceneParser : private JsonReader {
         srgb = p->get<bool>();
       }
       try {
-        t.image = readImageTexture(file, srgb, imageTexelsHeld(m_scene));
+        t.image = readImageTexture(file, srgb, m_texels_held);
       } catch (const ImageTextureError& e) {
         fail(file_at, e.what());
       }
+      m_texels_held += static_cast<std::size_t>(t.image->width) * t.image->height;
       if (const Json* p = find(v, "wrap")) {
         const std::string wrap = string(*p, member(path, "wrap"), "a string (repeat, clamp, mirror)");
         if (wrap == "repeat") t.wrap = Texture::Wrap::Repeat;
@@ -590,6 +593,10 @@ class SceneParser : private JsonReader {
   }
 
   Scene& m_scene;
+  // Texels of the scene's images so far, kept as they are read (a count each
+  // time would be quadratic in the materials). A "default" material that
+  // replaces one with an image leaves that image counted: on the safe side.
+  std::size_t m_texels_held;
   const std::vector<std::string>* m_material_order = nullptr;  // the materials' keys in file order
   std::unordered_map<std::string, int> m_material_index;       // materialsByName(): name -> index
   bool m_material_index_built = false;

@@ -52,6 +52,9 @@ expect_usage_error("--spp: spp must be in 1..65536, got 2147483648" render "${WO
 # A float's overflow is refused (its underflow is the number meant: exit_codes.cmake).
 expect_usage_error("--camera-pos: expected three numbers" render "${scene}" -o "${out}" --camera-pos 1e39,0,0)
 expect_usage_error("--min-weight" render "${scene}" -o "${out}" --min-weight 1e39)
+# One that rounds to 0 where 0 is not allowed is refused quoting what was typed.
+expect_usage_error("--focus-distance: expected a positive distance, got '1e-50'" render "${scene}" -o "${out}"
+                   --focus-distance 1e-50)
 expect_usage_error("--min-weight" render "${scene}" -o "${out}" --min-weight 2)
 expect_usage_error("--spp, --aa: aa grid needs a square spp" render "${scene}" -o "${out}" --aa grid --spp 5)
 expect_usage_error("--aa-max-level" render "${scene}" -o "${out}" --aa-max-level 9)

@@ -294,7 +294,7 @@ TEST_CASE("errors give the file, the JSON path and what was expected", "[scene][
        {"materials.m.texture.type", "unknown texture type 'marble'", "checker"}},
       {R"({"materials": {"m": {"texture": {}}}})", {"materials.m.texture: missing required key 'type'"}},
       {R"({"materials": {"m": {"texture": {"type": "checker", "scale": 0}}}})",
-       {"materials.m.texture.scale", "a positive number"}},
+       {"materials.m.texture.scale", "a number in [1e-15, 1e15]", "got 0"}},
       // lights
       {R"({"lights": {}})", {"lights: expected an array", "got an object"}},
       {R"({"lights": [{"type": "spot", "position": [0, 0, 0]}]})",

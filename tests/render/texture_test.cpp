@@ -51,6 +51,19 @@ std::string writePng(std::vector<std::uint8_t>* bytes) {
   return path;
 }
 
+// NAME.obj with its NAME.mtl, written in dir and loaded as a scene's one object.
+Scene meshScene(const std::string& dir, const std::string& name, const std::string& mtl, const std::string& obj) {
+  std::ofstream(dir + "/" + name + ".mtl") << mtl;
+  std::ofstream(dir + "/" + name + ".obj") << "mtllib " + name + ".mtl\n" + obj;
+  return parseScene(R"({"objects": [{"type": "mesh", "file": ")" + dir + "/" + name + R"(.obj"}]})", name);
+}
+
+std::string warningLines(const Scene& scene) {
+  std::string lines;
+  for (const std::string& w : scene.warnings) lines += w + "\n";
+  return lines;
+}
+
 // Bilinear filtering in double, written from the definition: texel centres at
 // ((i + 0.5) / w, 1 - (j + 0.5) / h), the wrap applied to texel indices.
 Vec3 bilinear(const ImageTexture& img, int wrap, double s, double t) {
@@ -190,15 +203,9 @@ TEST_CASE("a mesh's map_Kd is sampled at the texture coordinates its vertices ca
   CHECK(inside > width * height / 4);
   CHECK(worst < 2e-4);
   // A map_Kd that cannot be read is a warning, and the material stays plain.
-  {
-    std::ofstream mtl(dir + "/lost.mtl");
-    mtl << "newmtl lost\nKd 0.5 0.5 0.5\nmap_Kd missing.png\n";
-    std::ofstream obj(dir + "/lost.obj");
-    obj << "mtllib lost.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lost\nf 1 2 3\n";
-  }
-  const Scene lost = parseScene(R"({"objects": [{"type": "mesh", "file": ")" + dir + R"(/lost.obj"}]})", "lost");
-  std::string warnings;
-  for (const std::string& w : lost.warnings) warnings += w + "\n";
+  const Scene lost = meshScene(dir, "lost", "newmtl lost\nKd 0.5 0.5 0.5\nmap_Kd missing.png\n",
+                               "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lost\nf 1 2 3\n");
+  const std::string warnings = warningLines(lost);
   INFO(warnings);
   std::size_t map_warnings = 0;
   for (const std::string& w : lost.warnings) map_warnings += w.find("map_Kd not used") != std::string::npos;
@@ -331,16 +338,9 @@ TEST_CASE("the scene's images together hold at most 2^26 texels, refused before 
                              "/big.pgm: 8192 x 8192 texels, which with the 1 texels of the scene's images before it pass "
                              "the 67108864 texels textures may hold together"));
   // The same through a mesh's map_Kd: a warning, and the material stays plain.
-  {
-    std::ofstream mtl(dir + "/big.mtl");
-    mtl << "newmtl small\nmap_Kd one.pgm\nnewmtl large\nmap_Kd big.pgm\n";
-    std::ofstream obj(dir + "/big.obj");
-    obj << "mtllib big.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl small\nf 1 2 3\nusemtl large\nf 3 2 1\n";
-  }
-  const Scene mesh = parseScene(R"({"objects": [{"type": "mesh", "file": ")" + dir + R"(/big.obj"}]})", "big");
-  std::string warnings;
-  for (const std::string& w : mesh.warnings) warnings += w + "\n";
-  CHECK_THAT(warnings, Catch::Contains("material 'large': map_Kd not used: ") &&
+  const Scene mesh = meshScene(dir, "big", "newmtl small\nmap_Kd one.pgm\nnewmtl large\nmap_Kd big.pgm\n",
+                               "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl small\nf 1 2 3\nusemtl large\nf 3 2 1\n");
+  CHECK_THAT(warningLines(mesh), Catch::Contains("material 'large': map_Kd not used: ") &&
                            Catch::Contains("big.pgm: 8192 x 8192 texels, which with the 1 texels"));
   REQUIRE(mesh.materials.size() >= 2);
   CHECK(mesh.materials[mesh.materials.size() - 2].texture.kind == Texture::Kind::Image);

@@ -114,8 +114,9 @@ void parse(const JsonReader& r, const Json& v, const std::string& path, const st
 }
 
 // The kernel holds the coefficients scaled to a largest magnitude of 1
-// (flatten, below): a non-zero one that falls below float's smallest normal
-// there would silently leave the surface.
+// (flatten, below). One that falls below float's smallest normal there is
+// subnormal or zero, and OpenCL 1.2 lets a device flush subnormals to zero:
+// the kernel could solve another equation than the file's.
 std::string coefficientRangeProblem(const std::vector<double>& q) {
   double largest = 0;
   for (int i = 0; i < kCoefficients; ++i) largest = std::max(largest, std::fabs(q[i]));
@@ -123,7 +124,7 @@ std::string coefficientRangeProblem(const std::vector<double>& q) {
     if (q[i] != 0 && std::fabs(q[i]) / largest < FLT_MIN)
       return "coefficients span more than float holds: " + formatNumber(q[i]) + " beside " + formatNumber(largest) +
              " (the kernel keeps them scaled to a largest magnitude of 1, and " + formatNumber(q[i] / largest) +
-             " is below float's smallest normal number)";
+             " is below float's smallest normal number, which a device may flush to zero)";
   return "";
 }
 
