@@ -568,8 +568,9 @@ typedef struct PrismDeviceShare {
  * by processes (prismSetFrameParts) every part's, part by part. */
 PRISM_API PrismStatus prismGetRenderDeviceShareCount(PrismContext context, uint32_t* count);
 PRISM_API PrismStatus prismGetRenderDeviceShare(PrismContext context, uint32_t position, PrismDeviceShare* share);
-/* After a render: its warnings (a device that failed mid-frame), one per index;
- * owned by the context, valid until its next render. */
+/* After a render: its warnings (a device that failed mid-frame; pixels of the
+ * image that are not finite, with their count), one per index; owned by the
+ * context, valid until its next render. */
 PRISM_API PrismStatus prismGetRenderWarningCount(PrismContext context, uint32_t* count);
 PRISM_API PrismStatus prismGetRenderWarning(PrismContext context, uint32_t index, const char** message);
 
@@ -636,6 +637,10 @@ PRISM_API PrismStatus prismGetResultSize(PrismResult result, uint32_t* width, ui
 PRISM_API PrismStatus prismGetResultImage(PrismResult result, const float** rgba);
 PRISM_API PrismStatus prismGetResultAov(PrismResult result, PrismAov aov, const float** data, uint32_t* channels);
 PRISM_API PrismStatus prismGetResultStats(PrismResult result, PrismRenderStats* stats);
+/* The render's warnings, as prismGetRenderWarning gives a context's, owned by
+ * the result and valid until prismReleaseResult. */
+PRISM_API PrismStatus prismGetResultWarningCount(PrismResult result, uint32_t* count);
+PRISM_API PrismStatus prismGetResultWarning(PrismResult result, uint32_t index, const char** message);
 PRISM_API void prismReleaseResult(PrismResult result); /* NULL is a no-op */
 
 /* ---- ray queries ------------------------------------------------------------------ */

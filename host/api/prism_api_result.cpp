@@ -77,6 +77,21 @@ PRISM_API PrismStatus prismGetResultStats(PrismResult result, PrismRenderStats* 
   return PRISM_OK;
 }
 
+PRISM_API PrismStatus prismGetResultWarningCount(PrismResult result, uint32_t* count) {
+  PRISM_REQUIRE(result && count, "prismGetResultWarningCount: NULL argument");
+  *count = static_cast<uint32_t>(result->result.stats.warnings.size());
+  return PRISM_OK;
+}
+
+PRISM_API PrismStatus prismGetResultWarning(PrismResult result, uint32_t index, const char** message) {
+  PRISM_REQUIRE(result && message, "prismGetResultWarning: NULL argument");
+  const std::vector<std::string>& warnings = result->result.stats.warnings;
+  PRISM_REQUIRE(index < warnings.size(), "prismGetResultWarning: index " + std::to_string(index) +
+                                             " is not below the " + std::to_string(warnings.size()) + " warnings");
+  *message = warnings[index].c_str();
+  return PRISM_OK;
+}
+
 PRISM_API void prismReleaseResult(PrismResult result) { delete result; }
 
 }  // extern "C"

@@ -181,7 +181,8 @@ Messages:
                     with several devices, how much of the frame each one traced
   --check-nan       watch every ray's contribution for NaN and infinity; name the first
                     (its sample, pixel, ray and hit) and the first such pixel of the
-                    image, and exit with 3 if there is one (the image is still written)
+                    image, and exit with 3 if there is one (the image is still written);
+                    without it, such pixels draw a warning with their count, exit 0
   --quiet           no progress bar and no summary line (warnings and errors still
                     go to stderr)
   -h, --help        this help

@@ -21,17 +21,19 @@ namespace {
 // of 1e6 on a texture of 1e6 under lights of 1e30; a sharp Cook-Torrance
 // highlight seen at a grazing angle): the image says so rather than hand back
 // such pixels without a word.
-void warnNotFinite(RenderResult& result) {
+void warnNotFinite(RenderResult& result, bool check_nan) {
   std::size_t not_finite = 0;
   for (std::size_t i = 0; i < result.rgba.size(); i += 4)
     not_finite += !(std::isfinite(result.rgba[i]) && std::isfinite(result.rgba[i + 1]) &&
                     std::isfinite(result.rgba[i + 2]) && std::isfinite(result.rgba[i + 3]));
   if (not_finite > 0)
-    result.stats.warnings.push_back(std::to_string(not_finite) + " of the image's " +
+    result.stats.warnings.push_back(std::to_string(not_finite) + " of the colour image's " +
                                     std::to_string(result.rgba.size() / 4) +
                                     " pixels are not finite (infinite or NaN): the scene's brightest values together "
-                                    "may pass float's range; check_nan (prism render --check-nan) names the first ray "
-                                    "that brought one");
+                                    "may pass float's range" +
+                                    (check_nan ? std::string()
+                                               : "; check_nan (prism render --check-nan) names the first ray that "
+                                                 "brought one"));
 }
 
 }  // namespace
@@ -165,7 +167,7 @@ RenderResult Renderer::render(const Scene& scene, const RenderOptions& options, 
       }
     }
   }
-  if (m_parts.part == 0) warnNotFinite(result);
+  if (m_parts.part == 0) warnNotFinite(result, options.check_nan);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // The devices start up side by side: the frame waited for the slowest.
   for (Context* c : m_contexts) stats.first_launch_seconds = std::max(stats.first_launch_seconds, c->takeFirstLaunchSeconds());

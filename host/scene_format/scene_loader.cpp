@@ -264,6 +264,7 @@ class SceneParser : private JsonReader {
       // "default" replaces the built-in material rather than adding a second one.
       if (name == "default") {
         m_scene.materials[0] = m;
+        m_texels_held = imageTexelsHeld(m_scene);  // the one it replaced may have held an image
       } else {
         // A file's keys are unique; a scene built in parts can repeat a name.
         if (!materialsByName().emplace(name, static_cast<int>(m_scene.materials.size())).second)
@@ -594,8 +595,8 @@ class SceneParser : private JsonReader {
 
   Scene& m_scene;
   // Texels of the scene's images so far, kept as they are read (a count each
-  // time would be quadratic in the materials). A "default" material that
-  // replaces one with an image leaves that image counted: on the safe side.
+  // time would be quadratic in the materials), and counted again where a
+  // "default" material replaces one that may have held an image.
   std::size_t m_texels_held;
   const std::vector<std::string>* m_material_order = nullptr;  // the materials' keys in file order
   std::unordered_map<std::string, int> m_material_index;       // materialsByName(): name -> index

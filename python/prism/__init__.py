@@ -10,6 +10,7 @@ of rays. Errors are raised as prism.Error subclasses carrying prism's message.
 docs/python.md has the tour."""
 
 import os
+import warnings
 
 import numpy as np
 
@@ -36,12 +37,19 @@ def render(scene, device=None, aovs=(), progress=None, **options):
     """Renders a scene (a Scene, a scene file's path, or a dict in the scene
     format) and returns its image, float32 (height, width, 4): linear RGB and
     coverage alpha. With `aovs`, returns the whole prism.Render instead. The
-    device: `device`, else the scene's render.device, else the default."""
+    device: `device`, else the scene's render.device, else the default. The
+    render's warnings (stats["warnings"]: a device that failed mid-frame,
+    pixels that are not finite) are issued as Python warnings, since the
+    image alone carries no stats."""
     if not isinstance(scene, Scene):
         scene = Scene.from_json(scene) if isinstance(scene, dict) else Scene.load(scene)
     result = _context(device if device is not None else scene.device).render(scene, aovs=aovs, progress=progress,
                                                                              **options)
-    return result if aovs else result.rgba
+    if aovs:
+        return result
+    for message in result.stats["warnings"]:
+        warnings.warn("prism: " + message, RuntimeWarning, stacklevel=2)
+    return result.rgba
 
 
 def write_image(path, pixels):

@@ -140,7 +140,7 @@ class Context:
         normal, primid, albedo. The stats' "devices" say how much of the frame each
         device traced and the film memory it held ("film_bytes": the whole frame's on
         the device that resolves it, one unit's on the others), "warnings" name a device that failed mid-frame (the others
-        traced its part). `progress(fraction)` is called as the render goes;
+        traced its part) and count the image's pixels that are not finite. `progress(fraction)` is called as the render goes;
         return True from it to cancel (prism.Cancelled is raised)."""
         o = self.options(scene, **options)
         rgba = np.empty((o.height, o.width, 4), dtype=np.float32)

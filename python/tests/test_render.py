@@ -3,6 +3,7 @@ against the same scenes as text, AOVs against the camera's closed form,
 progress and cancellation, errors carrying prism's messages."""
 import math
 import os
+import warnings
 
 import numpy as np
 import pytest
@@ -253,6 +254,25 @@ assert [s["film_bytes"] for s in shares] == [24 * 320 * 240 * 4] + [24 * 65536] 
 assert b.stats["warnings"] == [] and len(a.stats["devices"]) == 1
 print("ok")
 """
+
+
+def test_the_one_liner_warns_of_pixels_that_are_not_finite(scenes_dir):
+    # A diffuse colour of 1e6 on a checker of 1e6 under a light of 1e30: each
+    # within its bound, 1e42 together, past float at every lit point.
+    bright = {
+        "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40},
+        "materials": {"hot": {"diffuse": 1e6, "texture": {"type": "checker", "color1": 1e6, "color2": 1e6}}},
+        "lights": [{"position": [0, 0, 5], "intensity": 1e30}],
+        "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "hot"}],
+    }
+    with pytest.warns(RuntimeWarning, match="pixels are not finite") as caught:
+        image = prism.render(bright, width=16, height=16, device="cpu")
+    bad = int((~np.isfinite(image).all(axis=2)).sum())
+    assert bad > 0
+    assert any(str(w.message).startswith("prism: %d of the colour image's 256 pixels" % bad) for w in caught)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a plain scene warns of nothing
+        prism.render(os.path.join(scenes_dir, "whitted.json"), width=16, height=12, device="cpu")
 
 
 def test_a_frame_over_several_devices_is_the_image_of_one(scenes_dir):

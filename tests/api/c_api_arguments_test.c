@@ -479,7 +479,32 @@ int main(int argc, char** argv) {
   BAD(prismGetResultStats(result, NULL), "prismGetResultStats");
   stats.struct_size = 0;
   BAD(prismGetResultStats(result, &stats), "prismGetResultStats");
+  BAD(prismGetResultWarningCount(NULL, &u32), "prismGetResultWarningCount");
+  BAD(prismGetResultWarningCount(result, NULL), "prismGetResultWarningCount");
+  CHECK_OK(prismGetResultWarningCount(result, &u32));
+  CHECK(u32 == 0); /* a plain scene */
+  BAD(prismGetResultWarning(result, 0, &text), "prismGetResultWarning");
+  BAD(prismGetResultWarning(NULL, 0, &text), "prismGetResultWarning");
   prismReleaseResult(result);
+  {
+    /* Each value within its bound, 1e42 together: the result keeps the
+     * render's warning, as the context does after prismRender. */
+    PrismScene bright = NULL;
+    CHECK_OK(prismLoadSceneFromString(
+        "{\"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0]},"
+        " \"materials\": {\"hot\": {\"diffuse\": 1e6, \"texture\": {\"type\": \"checker\", \"color1\": 1e6,"
+        " \"color2\": 1e6}}}, \"lights\": [{\"position\": [0, 0, 5], \"intensity\": 1e30}],"
+        " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": \"hot\"}]}",
+        "bright.json", &bright));
+    CHECK_OK(prismRenderToResult(ctx, bright, &small, &result));
+    CHECK_OK(prismGetResultWarningCount(result, &u32));
+    CHECK(u32 == 1);
+    CHECK_OK(prismGetResultWarning(result, 0, &text));
+    CHECK(text && strstr(text, "of the colour image's 48 pixels are not finite") != NULL);
+    BAD(prismGetResultWarning(result, 1, &text), "prismGetResultWarning");
+    prismReleaseResult(result);
+    prismReleaseScene(bright);
+  }
   prismReleaseResult(NULL);
   EXPECT(prismGetKernelTime(ctx, 0, &text, &seconds, &launches), PRISM_ERROR_INVALID_OPERATION,
          "prismGetKernelTime"); /* the render was not profiled */

@@ -141,9 +141,13 @@ TEST_CASE("check_nan names the first sample whose light is not finite, and the r
   // Without check_nan too, the render warns, counting the pixels the image holds.
   options.check_nan = false;
   const RenderResult plain = test::sharedRenderer().render(s, options);
-  CHECK_THAT(notFiniteWarning(plain), Catch::StartsWith(std::to_string(notFinitePixels(plain)) + " of the image's " +
-                                                        std::to_string(plain.width * plain.height) + " pixels are not finite"));
+  CHECK_THAT(notFiniteWarning(plain), Catch::StartsWith(std::to_string(notFinitePixels(plain)) + " of the colour image's " +
+                                                        std::to_string(plain.width * plain.height) + " pixels are not finite") &&
+                                          Catch::EndsWith("names the first ray that brought one"));
   CHECK(notFinitePixels(plain) > 0);
+  // With check_nan on, the warning does not send the user to it.
+  CHECK_THAT(notFiniteWarning(r), Catch::StartsWith(std::to_string(notFinitePixels(r)) + " of the colour image's") &&
+                                      !Catch::Contains("check_nan"));
 }
 
 // Every value within its own bound, but together past float: a diffuse colour
@@ -157,9 +161,14 @@ TEST_CASE("a render whose bright values together pass float's range warns with t
             R"("hot": {"diffuse": 1e6, "texture": {"type": "checker", "color1": 1e6, "color2": 1e6}})",
             R"({"position": [0, 1, 6], "intensity": 1e30})", "", R"({"max_depth": 0})"),
       "bright.json");
-  const RenderResult r = test::sharedRenderer().render(s, RenderOptions::fromScene(s));
-  const std::size_t bad = notFinitePixels(r);
-  CHECK(bad > 0);
-  CHECK_THAT(notFiniteWarning(r), Catch::StartsWith(std::to_string(bad) + " of the image's " +
-                                                    std::to_string(r.width * r.height) + " pixels are not finite"));
+  for (const char* aa : {"none", "adaptive"}) {
+    INFO("aa " << aa);
+    RenderOptions options = RenderOptions::fromScene(s);
+    options.aa = std::string(aa) == "none" ? AaMode::None : AaMode::Adaptive;
+    const RenderResult r = test::sharedRenderer().render(s, options);
+    const std::size_t bad = notFinitePixels(r);
+    CHECK(bad > 0);
+    CHECK_THAT(notFiniteWarning(r), Catch::StartsWith(std::to_string(bad) + " of the colour image's " +
+                                                      std::to_string(r.width * r.height) + " pixels are not finite"));
+  }
 }
